@@ -1,0 +1,146 @@
+// vrsimplify — vertex-removal mesh simplification after Pivec & Domiter, "A General
+// Simplification Algorithm" (extending Schroeder, Zarge & Lorensen 1992).
+//
+// One entry point: vrs::simplify(mesh, options) simplifies an indexed triangle mesh in place.
+// Every output vertex is an input vertex (the report carries the old->new index map), so any
+// per-vertex attribute the caller keeps beside the mesh survives exactly.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <functional>
+#include <string>
+#include <vector>
+
+namespace vrs {
+
+// Plain indexed triangle mesh: positions are xyz triples, triangles index triples into them.
+// Triangles are oriented (counter-clockwise seen from outside); orientation is preserved.
+struct Mesh {
+  std::vector<float> positions;
+  std::vector<uint32_t> triangles;
+
+  size_t vertex_count() const { return positions.size() / 3; }
+  size_t face_count() const { return triangles.size() / 3; }
+};
+
+// How a vertex's neighbourhood is flattened, both to evaluate the vertex and to re-triangulate
+// its hole.
+enum class Mode : uint8_t {
+  Surface3D,  // average plane of the neighbours (the paper's 3D method)
+  Terrain25D, // the XY plane: factor = mean |z - z_i| (the paper's 2.5D method, after Krivograd)
+  Planar2D,   // the mesh's own plane, computed once (flat FEM-like meshes, any orientation)
+};
+
+// When to stop. Exactly one applies; Auto is the paper's own rule.
+enum class TargetKind : uint8_t {
+  Faces,     // stop at or below `faces` triangles
+  Vertices,  // stop at or below `vertices` referenced vertices
+  Ratio,     // stop at or below `ratio` * input triangles
+  MaxFactor, // remove only vertices whose evaluation factor is <= `max_factor` (mesh units)
+  Auto,      // stop when only the last interval of the hash table is left
+};
+
+struct Target {
+  TargetKind kind = TargetKind::Ratio;
+  size_t faces = 0;
+  size_t vertices = 0;
+  double ratio = 0.5;      // in [0, 1]
+  double max_factor = 0.0; // >= 0, same unit as the positions
+};
+
+// The vertex selection structure. Intervals is the paper's hash table (Franc & Skala's bucket
+// queue, O(1) per operation); Heap is an exact binary heap, O(log n), kept as the quality
+// reference for the benchmark's ablation.
+enum class QueueKind : uint8_t { Intervals, Heap };
+
+// Mapping from evaluation factor to interval. Linear splits [0, f_max] evenly, as the paper;
+// Logarithmic splits [f_max * 1e-6, f_max] evenly in log(f), which keeps resolution where most
+// vertices of a smooth mesh are (small factors).
+enum class IntervalMapping : uint8_t { Linear, Logarithmic };
+
+// Progress: fraction of the planned work done, in [0, 1]. Return false to stop; the mesh is left
+// valid (every removal is atomic).
+using ProgressFn = std::function<bool(float fraction)>;
+
+struct Options {
+  Target target;
+  Mode mode = Mode::Surface3D;
+  QueueKind queue = QueueKind::Intervals;
+  IntervalMapping mapping = IntervalMapping::Linear;
+  // Number of hash-table intervals, >= 2. The last one holds the vertices of highest factor;
+  // TargetKind::Auto stops when only it is left, so more intervals simplify further.
+  int intervals = 1000;
+  // Boundary vertices are kept by default (paper §2.2). When true, a boundary vertex may be
+  // removed (factor: the larger of its distance to the line through its two boundary neighbours
+  // and its average-plane factor); corners, where the outline turns by more than 30°, and
+  // vertices of a single triangle are always kept.
+  bool simplify_boundary = false;
+  // A new triangle may turn at most this far from the average plane's normal. The projection
+  // check alone allows up to 90°; nearly vertical triangles are folds in waiting.
+  double max_normal_angle_deg = 80.0;
+  // Vertices with more neighbours than this are kept: the removal's ear clipping is O(k^3)
+  // and a hub that large is a feature (a cone apex, a fan centre), not noise.
+  int max_valence = 32;
+  // Optional per-vertex lock (nonzero = never removed), size vertex_count(): selections, tile
+  // borders. Not owned.
+  const std::vector<uint8_t> *locked = nullptr;
+  ProgressFn progress;
+};
+
+// Why a candidate removal was refused; the vertex stays and is retried after its ring changes.
+enum Reject : uint8_t {
+  RejectFold,       // ring does not project as a star around the vertex (the patch folds)
+  RejectEdge,       // a new diagonal is already an edge of the mesh (would make it non-manifold)
+  RejectTriangle,   // a new triangle already exists (would duplicate a face)
+  RejectFlip,       // a new triangle turns more than max_normal_angle_deg from the plane
+  RejectDegenerate, // a new triangle would be a sliver or have no area
+  RejectCount
+};
+const char *reject_name(Reject r);
+
+enum class StopReason : uint8_t {
+  TargetReached, // the face / vertex / ratio target is met
+  MaxFactor,     // no vertex left with factor <= max_factor
+  LastInterval,  // only the last interval is left (Auto)
+  NoCandidates,  // every remaining vertex is kept or was refused: the target cannot be reached
+  Cancelled,     // the progress callback returned false
+  InvalidInput,  // nothing was done, see Report::message
+};
+const char *stop_reason_name(StopReason r);
+
+struct Report {
+  bool ok = false;     // false: invalid input or options, the mesh is unchanged
+  std::string message; // the error, or warnings about the input (empty if none)
+  StopReason stop = StopReason::InvalidInput;
+  bool target_reached = false;
+
+  size_t input_vertices = 0, input_faces = 0;
+  size_t vertices = 0, faces = 0; // output (vertices: referenced ones, plus unreferenced inputs)
+  size_t removed = 0;             // vertices removed
+  size_t rejected[RejectCount] = {};
+  size_t rejected_total() const;
+
+  // What the input held that the simplifier had to work around.
+  size_t dropped_degenerate_faces = 0; // faces with a repeated index (no area, no topology)
+  size_t nonfinite_vertices = 0;       // NaN/inf coordinates: kept with their neighbours
+  size_t kept_boundary = 0, kept_nonmanifold = 0, kept_locked = 0, kept_high_valence = 0;
+  size_t unreferenced_vertices = 0; // left untouched
+
+  double max_removed_factor = 0.0; // largest evaluation factor of a removed vertex
+  std::vector<uint32_t> remap;     // old vertex index -> new index, or kRemoved
+};
+
+constexpr uint32_t kRemoved = 0xffffffffu;
+
+// Simplifies `mesh` in place: removed vertices are compacted away (kept vertices keep their
+// relative order) and triangles rewritten. On invalid input (report.ok == false) the mesh is
+// left exactly as given. Deterministic: the same input and options give the same output.
+Report simplify(Mesh &mesh, const Options &options);
+
+// Short parsers used by the adapters (CLI, plugin): false on an unknown name.
+bool parse_mode(const std::string &s, Mode &out);
+bool parse_queue(const std::string &s, QueueKind &out);
+bool parse_mapping(const std::string &s, IntervalMapping &out);
+
+} // namespace vrs

@@ -1,0 +1,47 @@
+// The paper's hash table: n intervals, each a FIFO list threaded through the vertices
+// (intrusive prev/next, so unlink and append are O(1) and nothing is allocated after init).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "interval_map.h"
+#include "topology.h"
+
+namespace vrs {
+
+class BucketQueue {
+ public:
+  void init(size_t vertex_count, const IntervalMap &map);
+
+  // Appends v at the end of the interval of `factor` (re-evaluated vertices go to the back:
+  // this spreads removals over the mesh instead of eating one region).
+  void push(uint32_t v, double factor);
+  void erase(uint32_t v);
+  bool contains(uint32_t v) const { return where_[v] != kNone; }
+  size_t size() const { return size_; }
+  bool empty() const { return size_ == 0; }
+  bool only_last_left() const { return size_ > 0 && lowest() == map_.n - 1; }
+
+  // First vertex of the lowest non-empty interval, or kNone. It stays queued until erased.
+  uint32_t front() const;
+
+  // Re-maps every queued vertex over [0, max factor of the queue], keeping their order. Used
+  // when a count target is not met and only the last interval is left: the bucket order is
+  // then no order at all, and a new range restores it. `factor` is indexed by vertex.
+  void respread(const float *factor);
+
+  const IntervalMap &map() const { return map_; }
+
+ private:
+  int lowest() const;
+  void link_back(uint32_t v, int interval);
+
+  IntervalMap map_;
+  std::vector<uint32_t> next_, prev_, where_;
+  std::vector<uint32_t> head_, tail_;
+  std::vector<uint64_t> nonempty_; // bit i: interval i has vertices
+  size_t size_ = 0;
+};
+
+} // namespace vrs

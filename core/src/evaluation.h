@@ -1,0 +1,49 @@
+// The paper's evaluation factor (§2.1): how far a vertex stands from the average plane of its
+// neighbours. Small factor = little visual importance = removed first.
+#pragma once
+
+#include "geometry.h"
+#include "topology.h"
+#include "vrs/simplify.h"
+
+namespace vrs {
+
+// Up to this valence every triple of neighbours defines a plane (C(10,3) = 120); above it a
+// fixed subset of 2k triples spread around the ring keeps the cost linear in k.
+constexpr int kAllTriplesValence = 10;
+// cos(30°): a boundary vertex where the outline turns more than this is a corner, kept.
+constexpr double kBoundaryCornerCos = 0.8660254037844387;
+
+struct Evaluation {
+  double factor = 0; // +inf when the vertex has no usable plane (it is then kept)
+  Vec3 normal;       // unit normal of the plane the hole is projected on
+  Vec3 fan_normal;   // unit area-weighted normal of the vertex's triangles
+};
+
+class Evaluator {
+ public:
+  // `plane` is the mesh's own normal (Planar2D only).
+  Evaluator(Mode mode, Vec3 plane, const float *positions)
+      : mode_(mode), plane_(plane), pos_(positions) {}
+
+  Vec3 position(uint32_t v) const { return {pos_[3 * v], pos_[3 * v + 1], pos_[3 * v + 2]}; }
+
+  // Factor of v with its ordered ring. `boundary_line` adds, for an open ring, the distance to
+  // the line through its two boundary neighbours (the paper's two-neighbour factor).
+  Evaluation evaluate(uint32_t v, const Ring &ring, bool boundary_line) const;
+
+ private:
+  Vec3 average_plane_normal(const Vec3 *p, int k, Vec3 fan) const;
+
+  Mode mode_;
+  Vec3 plane_;
+  const float *pos_;
+};
+
+// Distance from p to the line through a and b (to a when a == b).
+double distance_to_line(Vec3 p, Vec3 a, Vec3 b);
+
+// Unit normal of the whole mesh (area weighted), the plane of Planar2D.
+Vec3 mesh_plane_normal(const float *positions, const std::vector<uint32_t> &triangles);
+
+} // namespace vrs

@@ -1,0 +1,51 @@
+#include "input_check.h"
+
+#include <cmath>
+#include <cstdint>
+
+#include "topology.h"
+
+namespace vrs {
+
+std::string check_options(const Options &o, size_t vertex_count) {
+  const Target &t = o.target;
+  if (static_cast<unsigned>(t.kind) > static_cast<unsigned>(TargetKind::Auto))
+    return "unknown target kind";
+  if (t.kind == TargetKind::Ratio && !(t.ratio >= 0.0 && t.ratio <= 1.0))
+    return "ratio must be in [0, 1], got " + std::to_string(t.ratio);
+  if (t.kind == TargetKind::MaxFactor && !(t.max_factor >= 0.0 && std::isfinite(t.max_factor)))
+    return "max factor must be finite and >= 0, got " + std::to_string(t.max_factor);
+  if (static_cast<unsigned>(o.mode) > static_cast<unsigned>(Mode::Planar2D)) return "unknown mode";
+  if (static_cast<unsigned>(o.queue) > static_cast<unsigned>(QueueKind::Heap))
+    return "unknown queue";
+  if (static_cast<unsigned>(o.mapping) > static_cast<unsigned>(IntervalMapping::Logarithmic))
+    return "unknown interval mapping";
+  if (o.intervals < 2 || o.intervals > (1 << 20))
+    return "intervals must be in [2, 1048576], got " + std::to_string(o.intervals);
+  if (!(o.max_normal_angle_deg > 0.0 && o.max_normal_angle_deg <= 90.0))
+    return "max normal angle must be in (0, 90] degrees, got " +
+           std::to_string(o.max_normal_angle_deg);
+  if (o.max_valence < 3 || o.max_valence > kMaxRing)
+    return "max valence must be in [3, " + std::to_string(kMaxRing) + "], got " +
+           std::to_string(o.max_valence);
+  if (o.locked && o.locked->size() != vertex_count)
+    return "lock array has " + std::to_string(o.locked->size()) + " entries for " +
+           std::to_string(vertex_count) + " vertices";
+  return {};
+}
+
+std::string check_mesh(const Mesh &m) {
+  if (m.positions.size() % 3 != 0) return "positions size is not a multiple of 3";
+  if (m.triangles.size() % 3 != 0) return "triangles size is not a multiple of 3";
+  const size_t n = m.vertex_count();
+  if (n >= kNone) return "too many vertices (" + std::to_string(n) + ")";
+  if (m.triangles.size() / 3 >= kNone) return "too many triangles";
+  for (size_t i = 0; i < m.triangles.size(); ++i)
+    if (m.triangles[i] >= n)
+      return "triangle " + std::to_string(i / 3) + " has vertex index " +
+             std::to_string(m.triangles[i]) + ", out of range for " + std::to_string(n) +
+             " vertices";
+  return {};
+}
+
+} // namespace vrs

@@ -1,0 +1,68 @@
+// Names of the enums, for reports, the CLI and the plugin.
+#include "vrs/simplify.h"
+
+namespace vrs {
+
+const char *reject_name(Reject r) {
+  switch (r) {
+  case RejectFold: return "fold";
+  case RejectEdge: return "edge_exists";
+  case RejectTriangle: return "triangle_exists";
+  case RejectFlip: return "flip";
+  case RejectDegenerate: return "degenerate";
+  default: return "unknown";
+  }
+}
+
+const char *stop_reason_name(StopReason r) {
+  switch (r) {
+  case StopReason::TargetReached: return "target_reached";
+  case StopReason::MaxFactor: return "max_factor";
+  case StopReason::LastInterval: return "last_interval";
+  case StopReason::NoCandidates: return "no_candidates";
+  case StopReason::Cancelled: return "cancelled";
+  case StopReason::InvalidInput: return "invalid_input";
+  }
+  return "unknown";
+}
+
+size_t Report::rejected_total() const {
+  size_t n = 0;
+  for (size_t r : rejected)
+    n += r;
+  return n;
+}
+
+bool parse_mode(const std::string &s, Mode &out) {
+  if (s == "surface")
+    out = Mode::Surface3D;
+  else if (s == "terrain")
+    out = Mode::Terrain25D;
+  else if (s == "planar")
+    out = Mode::Planar2D;
+  else
+    return false;
+  return true;
+}
+
+bool parse_queue(const std::string &s, QueueKind &out) {
+  if (s == "intervals")
+    out = QueueKind::Intervals;
+  else if (s == "heap")
+    out = QueueKind::Heap;
+  else
+    return false;
+  return true;
+}
+
+bool parse_mapping(const std::string &s, IntervalMapping &out) {
+  if (s == "linear")
+    out = IntervalMapping::Linear;
+  else if (s == "log")
+    out = IntervalMapping::Logarithmic;
+  else
+    return false;
+  return true;
+}
+
+} // namespace vrs

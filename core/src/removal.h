@@ -1,0 +1,31 @@
+// Plans the removal of one vertex: projects its ring on the plane, triangulates the hole and
+// runs the vetoes. Nothing is written; the driver commits an accepted plan.
+#pragma once
+
+#include "evaluation.h"
+#include "topology.h"
+#include "triangulation.h"
+#include "vrs/simplify.h"
+
+namespace vrs {
+
+struct RemovalLimits {
+  double min_normal_cos = 0.17; // cos(max_normal_angle_deg)
+  // Quality (1 = equilateral) under which a new triangle counts as degenerate. Low on purpose:
+  // thin triangles are legitimate on CAD meshes; only near-zero-area ones are refused.
+  double min_quality = 1e-3;
+};
+
+// A direction on which every triangle around v projects counter-clockwise, tried among the
+// fan's area-weighted normal, the mean of its unit normals and each triangle's own normal.
+bool star_direction(uint32_t v, const Ring &ring, const Evaluator &eval, Vec3 &out);
+
+// Returns RejectCount when the removal is valid (the patch is in `out`), else the reason.
+// `surface_normals` holds the input's unit vertex normals (3 floats a vertex): a new triangle
+// must face the same side as the original surface at its corners, which the local plane alone
+// cannot promise after many removals have moved the ring.
+Reject plan_removal(uint32_t v, const Ring &ring, Vec3 normal, const Evaluator &eval,
+                    const Topology &topo, const uint32_t *tris, const float *surface_normals,
+                    const RemovalLimits &limits, Patch &out);
+
+} // namespace vrs

@@ -1,0 +1,362 @@
+// The driver: read -> classify + evaluate -> queue -> pop -> plan -> commit -> re-evaluate the
+// ring -> ... -> compact. Decisions live in the modules it calls; this file only sequences them.
+#include <cmath>
+#include <limits>
+
+#include "bucket_queue.h"
+#include "evaluation.h"
+#include "heap_queue.h"
+#include "input_check.h"
+#include "removal.h"
+#include "topology.h"
+#include "vrs/simplify.h"
+
+namespace vrs {
+
+namespace {
+
+constexpr uint8_t kFlagLocked = 1;  // never removed: user lock, or next to a NaN/inf position
+constexpr uint8_t kFlagRemoved = 2; // gone from the mesh
+
+// Drops faces with a repeated corner: they have no area and no place in a manifold fan.
+size_t drop_repeated_corner_faces(std::vector<uint32_t> &tris) {
+  size_t out = 0;
+  for (size_t i = 0; i < tris.size(); i += 3) {
+    uint32_t a = tris[i], b = tris[i + 1], c = tris[i + 2];
+    if (a == b || b == c || c == a) continue;
+    tris[out++] = a;
+    tris[out++] = b;
+    tris[out++] = c;
+  }
+  size_t dropped = (tris.size() - out) / 3;
+  tris.resize(out);
+  return dropped;
+}
+
+class Simplifier {
+ public:
+  Simplifier(Mesh &mesh, const Options &opt, Report &rep)
+      : mesh_(mesh), opt_(opt), rep_(rep),
+        eval_(opt.mode,
+              opt.mode == Mode::Planar2D ? mesh_plane_normal(mesh.positions.data(), mesh.triangles)
+                                         : Vec3{0, 0, 1},
+              mesh.positions.data()) {
+    limits_.min_normal_cos = std::cos(opt.max_normal_angle_deg * 3.14159265358979323846 / 180);
+  }
+
+  void prepare();
+  template <class Queue> void run(Queue &queue);
+  void compact();
+
+ private:
+  bool removable(VertexKind k) const {
+    return k == VertexKind::Interior || (opt_.simplify_boundary && k == VertexKind::Boundary);
+  }
+  // Factor of v with its current ring, or +inf when v must stay.
+  double evaluate(uint32_t v, Ring &ring, Evaluation *e = nullptr);
+  bool target_met() const;
+  float progress_fraction(size_t queued, size_t queued0) const;
+  template <class Queue> void commit(uint32_t v, const Ring &ring, const Patch &patch, Queue &q);
+
+  Mesh &mesh_;
+  const Options &opt_;
+  Report &rep_;
+  Evaluator eval_;
+  RemovalLimits limits_;
+  Topology topo_;
+  std::vector<float> factor_;
+  std::vector<float> normals_; // unit vertex normals of the input surface, 3 a vertex
+  std::vector<uint8_t> flags_;
+  size_t faces_ = 0, vertices_ = 0, target_faces_ = 0, target_vertices_ = 0;
+  size_t faces0_ = 0;
+};
+
+void Simplifier::prepare() {
+  const size_t n = mesh_.vertex_count();
+  rep_.dropped_degenerate_faces = drop_repeated_corner_faces(mesh_.triangles);
+  flags_.assign(n, 0);
+  if (opt_.locked)
+    for (size_t v = 0; v < n; ++v)
+      if ((*opt_.locked)[v]) flags_[v] |= kFlagLocked;
+  // A NaN/inf position poisons every plane it takes part in: lock it and its neighbours.
+  const auto &t = mesh_.triangles;
+  for (size_t v = 0; v < n; ++v)
+    if (!is_finite(eval_.position(static_cast<uint32_t>(v)))) ++rep_.nonfinite_vertices;
+  if (rep_.nonfinite_vertices)
+    for (size_t i = 0; i < t.size(); i += 3)
+      if (!is_finite(eval_.position(t[i])) || !is_finite(eval_.position(t[i + 1])) ||
+          !is_finite(eval_.position(t[i + 2])))
+        flags_[t[i]] = flags_[t[i + 1]] = flags_[t[i + 2]] = kFlagLocked;
+
+  topo_.build(t, n);
+  // Area weights scaled by the largest coordinate: float sums of (3e38)^2 would overflow.
+  double extent = 0;
+  for (float x : mesh_.positions)
+    if (std::isfinite(x)) extent = std::max(extent, std::fabs(double(x)));
+  const double scale = extent > 0 ? 1.0 / (extent * extent) : 1.0;
+  normals_.assign(3 * n, 0.0f);
+  for (size_t i = 0; i < t.size(); i += 3) {
+    Vec3 a = eval_.position(t[i]), b = eval_.position(t[i + 1]), c = eval_.position(t[i + 2]);
+    Vec3 area = cross(b - a, c - a) * scale;
+    if (!is_finite(area)) continue;
+    for (int k = 0; k < 3; ++k) {
+      float *sn = &normals_[3 * size_t(t[i + k])];
+      sn[0] += float(area.x), sn[1] += float(area.y), sn[2] += float(area.z);
+    }
+  }
+  for (size_t v = 0; v < n; ++v) {
+    Vec3 u = normalized(Vec3{normals_[3 * v], normals_[3 * v + 1], normals_[3 * v + 2]});
+    normals_[3 * v] = float(u.x), normals_[3 * v + 1] = float(u.y),
+                 normals_[3 * v + 2] = float(u.z);
+  }
+  factor_.assign(n, std::numeric_limits<float>::infinity());
+  faces_ = faces0_ = t.size() / 3;
+  Ring ring;
+  for (uint32_t v = 0; v < n; ++v) {
+    VertexKind kind = topo_.ring(v, t.data(), opt_.max_valence, ring);
+    switch (kind) {
+    case VertexKind::Isolated: ++rep_.unreferenced_vertices; continue;
+    case VertexKind::Boundary:
+    case VertexKind::Corner: rep_.kept_boundary += !removable(kind); break;
+    case VertexKind::NonManifold: ++rep_.kept_nonmanifold; break;
+    case VertexKind::HighValence: ++rep_.kept_high_valence; break;
+    case VertexKind::Interior: break;
+    }
+    ++vertices_;
+    if (flags_[v] & kFlagLocked) {
+      ++rep_.kept_locked;
+      continue;
+    }
+    if (removable(kind)) factor_[v] = static_cast<float>(evaluate(v, ring));
+  }
+
+  const TargetKind tk = opt_.target.kind;
+  target_faces_ = tk == TargetKind::Faces ? opt_.target.faces
+                  : tk == TargetKind::Ratio
+                      ? static_cast<size_t>(std::llround(opt_.target.ratio * faces0_))
+                      : 0;
+  target_vertices_ = tk == TargetKind::Vertices ? opt_.target.vertices : 0;
+}
+
+double Simplifier::evaluate(uint32_t v, Ring &ring, Evaluation *out) {
+  Evaluation e = eval_.evaluate(v, ring, opt_.simplify_boundary);
+  if (out) *out = e;
+  return e.factor;
+}
+
+bool Simplifier::target_met() const {
+  switch (opt_.target.kind) {
+  case TargetKind::Faces:
+  case TargetKind::Ratio: return faces_ <= target_faces_;
+  case TargetKind::Vertices: return vertices_ <= target_vertices_;
+  default: return false;
+  }
+}
+
+float Simplifier::progress_fraction(size_t queued, size_t queued0) const {
+  double f = 0;
+  switch (opt_.target.kind) {
+  case TargetKind::Faces:
+  case TargetKind::Ratio:
+    f = faces0_ > target_faces_ ? double(faces0_ - faces_) / double(faces0_ - target_faces_) : 1;
+    break;
+  case TargetKind::Vertices: {
+    size_t v0 = vertices_ + rep_.removed;
+    f = v0 > target_vertices_ ? double(rep_.removed) / double(v0 - target_vertices_) : 1;
+    break;
+  }
+  default: f = queued0 ? 1.0 - double(queued) / double(queued0) : 1; break;
+  }
+  return static_cast<float>(std::min(1.0, std::max(0.0, f)));
+}
+
+template <class Queue>
+void Simplifier::commit(uint32_t v, const Ring &ring, const Patch &patch, Queue &queue) {
+  uint32_t *tris = mesh_.triangles.data();
+  // Old faces leave their corners' lists; new faces take the first slots (the array never
+  // grows: k or k-1 faces out, k-2 in), the rest are marked dead until compaction.
+  for (int i = 0; i < ring.faces; ++i) {
+    uint32_t f = ring.f[i];
+    for (int c = 0; c < 3; ++c)
+      if (tris[3 * f + c] != v) topo_.remove_face(tris[3 * f + c], f);
+  }
+  for (int i = 0; i < ring.faces; ++i) {
+    uint32_t f = ring.f[i];
+    for (int c = 0; c < 3; ++c) {
+      tris[3 * f + c] = i < patch.count ? ring.v[patch.tri[i][c]] : kNone;
+      if (i < patch.count) topo_.add_face(tris[3 * f + c], f);
+    }
+  }
+  topo_.clear(v);
+  flags_[v] |= kFlagRemoved;
+  faces_ -= static_cast<size_t>(ring.faces - patch.count);
+  --vertices_;
+  ++rep_.removed;
+  rep_.max_removed_factor = std::max(rep_.max_removed_factor, double(factor_[v]));
+
+  // The neighbours' planes and rings changed: re-evaluate them and append them to the back of
+  // their (possibly new) interval.
+  Ring r;
+  const bool by_factor = opt_.target.kind == TargetKind::MaxFactor;
+  for (int i = 0; i < ring.verts; ++i) {
+    uint32_t u = ring.v[i];
+    if (flags_[u] & kFlagLocked) continue;
+    VertexKind kind = topo_.ring(u, tris, opt_.max_valence, r);
+    double f = removable(kind) ? evaluate(u, r) : std::numeric_limits<double>::infinity();
+    factor_[u] = static_cast<float>(f);
+    if (std::isfinite(f) && (!by_factor || f <= opt_.target.max_factor))
+      queue.push(u, f);
+    else
+      queue.erase(u);
+  }
+}
+
+template <class Queue> void Simplifier::run(Queue &queue) {
+  const size_t n = mesh_.vertex_count();
+  IntervalMap map;
+  map.n = opt_.intervals;
+  map.kind = opt_.mapping;
+  for (size_t v = 0; v < n; ++v)
+    if (std::isfinite(factor_[v])) map.f_max = std::max(map.f_max, double(factor_[v]));
+  queue.init(n, map);
+  const bool by_factor = opt_.target.kind == TargetKind::MaxFactor;
+  for (uint32_t v = 0; v < n; ++v)
+    if (std::isfinite(factor_[v]) && (!by_factor || factor_[v] <= opt_.target.max_factor))
+      queue.push(v, factor_[v]);
+
+  const size_t queued0 = queue.size();
+  const bool counts = opt_.target.kind == TargetKind::Faces ||
+                      opt_.target.kind == TargetKind::Ratio ||
+                      opt_.target.kind == TargetKind::Vertices;
+  size_t pops_since_respread = 0, iterations = 0;
+  Ring ring;
+  Patch patch;
+  for (;;) {
+    if (target_met()) {
+      rep_.stop = StopReason::TargetReached;
+      break;
+    }
+    if (queue.empty()) {
+      rep_.stop = by_factor ? StopReason::MaxFactor
+                  : counts  ? StopReason::NoCandidates
+                            : StopReason::LastInterval;
+      break;
+    }
+    if (queue.only_last_left()) {
+      if (!counts && !by_factor) {
+        rep_.stop = StopReason::LastInterval;
+        break;
+      }
+      // A count target asks for more than the table's range allows: spread the remaining
+      // vertices over a new range. Amortized: at most once per quarter of the queue popped.
+      if (pops_since_respread >= queue.size() / 4) {
+        queue.respread(factor_.data());
+        pops_since_respread = 0;
+      }
+    }
+    if (opt_.progress && (++iterations & 255) == 0 &&
+        !opt_.progress(progress_fraction(queue.size(), queued0))) {
+      rep_.stop = StopReason::Cancelled;
+      break;
+    }
+
+    const uint32_t v = queue.front();
+    queue.erase(v);
+    ++pops_since_respread;
+    VertexKind kind = topo_.ring(v, mesh_.triangles.data(), opt_.max_valence, ring);
+    Evaluation e;
+    if (!removable(kind) || !std::isfinite(evaluate(v, ring, &e))) continue;
+    const uint32_t *tris = mesh_.triangles.data();
+    Reject why =
+        plan_removal(v, ring, e.normal, eval_, topo_, tris, normals_.data(), limits_, patch);
+    // At tips, creases and thin parts the average plane of a strongly curved ring can fold it
+    // or tilt the patch away, while another direction still sees the ring as a star.
+    if ((why == RejectFold || why == RejectFlip) && opt_.mode == Mode::Surface3D) {
+      Vec3 d;
+      if (star_direction(v, ring, eval_, d))
+        why = plan_removal(v, ring, d, eval_, topo_, tris, normals_.data(), limits_, patch);
+    }
+    if (why != RejectCount) {
+      ++rep_.rejected[why]; // retried when a neighbour's removal changes its ring
+      continue;
+    }
+    commit(v, ring, patch, queue);
+  }
+  if (opt_.progress && rep_.stop != StopReason::Cancelled) opt_.progress(1.0f);
+}
+
+void Simplifier::compact() {
+  auto &tris = mesh_.triangles;
+  size_t out = 0;
+  for (size_t i = 0; i < tris.size(); i += 3) {
+    if (tris[i] == kNone) continue;
+    for (int c = 0; c < 3; ++c)
+      tris[out++] = tris[i + c];
+  }
+  tris.resize(out);
+
+  const size_t n = mesh_.vertex_count();
+  auto &pos = mesh_.positions;
+  rep_.remap.assign(n, kRemoved);
+  uint32_t next = 0;
+  for (size_t v = 0; v < n; ++v) {
+    if (flags_[v] & kFlagRemoved) continue;
+    for (int c = 0; c < 3; ++c)
+      pos[3 * next + c] = pos[3 * v + c];
+    rep_.remap[v] = next++;
+  }
+  pos.resize(3 * size_t(next));
+  for (uint32_t &i : tris)
+    i = rep_.remap[i];
+  rep_.faces = tris.size() / 3;
+  rep_.vertices = next;
+}
+
+std::string input_warnings(const Report &r) {
+  std::string w;
+  auto add = [&](size_t count, const char *what) {
+    if (!count) return;
+    if (!w.empty()) w += "; ";
+    w += std::to_string(count) + " " + what;
+  };
+  add(r.dropped_degenerate_faces, "faces with a repeated vertex dropped");
+  add(r.nonfinite_vertices, "vertices with NaN/inf coordinates kept with their neighbours");
+  add(r.kept_nonmanifold, "non-manifold vertices kept");
+  add(r.kept_high_valence, "vertices of too high valence kept");
+  add(r.unreferenced_vertices, "unreferenced vertices left untouched");
+  return w;
+}
+
+} // namespace
+
+Report simplify(Mesh &mesh, const Options &options) {
+  Report rep;
+  rep.input_vertices = mesh.vertex_count();
+  rep.input_faces = mesh.face_count();
+  rep.vertices = rep.input_vertices;
+  rep.faces = rep.input_faces;
+  std::string error = check_mesh(mesh);
+  if (error.empty()) error = check_options(options, mesh.vertex_count());
+  if (!error.empty()) {
+    rep.message = error;
+    return rep;
+  }
+
+  Simplifier s(mesh, options, rep);
+  s.prepare();
+  if (options.queue == QueueKind::Heap) {
+    HeapQueue q;
+    s.run(q);
+  } else {
+    BucketQueue q;
+    s.run(q);
+  }
+  s.compact();
+  rep.ok = true;
+  rep.target_reached = rep.stop == StopReason::TargetReached || rep.stop == StopReason::MaxFactor ||
+                       rep.stop == StopReason::LastInterval;
+  rep.message = input_warnings(rep);
+  return rep;
+}
+
+} // namespace vrs

@@ -1,0 +1,129 @@
+#include "topology.h"
+
+#include <algorithm>
+
+namespace vrs {
+
+void Topology::build(const std::vector<uint32_t> &triangles, size_t vertex_count) {
+  first_.assign(vertex_count, 0);
+  count_.assign(vertex_count, 0);
+  capacity_.assign(vertex_count, 0);
+  for (uint32_t c : triangles)
+    ++capacity_[c];
+  // Slack of 2 per vertex: after a removal a neighbour usually gains at most one or two faces,
+  // so most slices never move.
+  size_t offset = 0;
+  for (size_t v = 0; v < vertex_count; ++v) {
+    first_[v] = static_cast<uint32_t>(offset);
+    capacity_[v] += 2;
+    offset += capacity_[v];
+  }
+  pool_.reserve(offset + offset / 4);
+  pool_.assign(offset, kNone);
+  for (size_t i = 0; i < triangles.size(); ++i) {
+    uint32_t v = triangles[i];
+    pool_[first_[v] + count_[v]++] = static_cast<uint32_t>(i / 3);
+  }
+}
+
+void Topology::grow(uint32_t v) {
+  // Move the slice to the end of the pool with double room; the old slice is abandoned.
+  uint32_t cap = capacity_[v] * 2 + 2;
+  size_t at = pool_.size();
+  pool_.resize(at + cap, kNone);
+  std::copy_n(pool_.begin() + first_[v], count_[v], pool_.begin() + at);
+  first_[v] = static_cast<uint32_t>(at);
+  capacity_[v] = cap;
+}
+
+void Topology::add_face(uint32_t v, uint32_t face) {
+  if (count_[v] == capacity_[v]) grow(v);
+  pool_[first_[v] + count_[v]++] = face;
+}
+
+void Topology::remove_face(uint32_t v, uint32_t face) {
+  uint32_t *s = pool_.data() + first_[v];
+  uint32_t n = count_[v];
+  for (uint32_t i = 0; i < n; ++i) {
+    if (s[i] == face) {
+      // Keep the order: rings are built from it and the output must be deterministic.
+      std::copy(s + i + 1, s + n, s + i);
+      --count_[v];
+      return;
+    }
+  }
+}
+
+VertexKind Topology::ring(uint32_t v, const uint32_t *tris, int max_valence, Ring &out) const {
+  const uint32_t m = count_[v];
+  out.verts = out.faces = 0;
+  if (m == 0) return VertexKind::Isolated;
+  if (m > static_cast<uint32_t>(std::min(max_valence, kMaxRing))) return VertexKind::HighValence;
+
+  // Each face (v, a, b) contributes the directed ring edge a -> b.
+  std::array<uint32_t, kMaxRing> from, to;
+  const uint32_t *s = faces_of(v);
+  for (uint32_t i = 0; i < m; ++i) {
+    const uint32_t *t = tris + 3 * s[i];
+    int c = t[0] == v ? 0 : t[1] == v ? 1 : 2;
+    from[i] = t[(c + 1) % 3];
+    to[i] = t[(c + 2) % 3];
+  }
+  // A neighbour twice on the same side means an edge with > 2 faces or flipped orientation.
+  int start = -1, starts = 0;
+  for (uint32_t i = 0; i < m; ++i) {
+    bool has_pred = false;
+    for (uint32_t j = 0; j < m; ++j) {
+      if (j != i && (from[j] == from[i] || to[j] == to[i])) return VertexKind::NonManifold;
+      has_pred = has_pred || to[j] == from[i];
+    }
+    if (!has_pred) {
+      start = static_cast<int>(i);
+      ++starts;
+    }
+  }
+  if (starts > 1) return VertexKind::NonManifold; // several fans meet at v
+  const bool closed = starts == 0;
+  uint32_t cur = closed ? 0 : static_cast<uint32_t>(start);
+  for (uint32_t step = 0; step < m; ++step) {
+    out.v[step] = from[cur];
+    out.f[step] = s[cur];
+    uint32_t next = kNone;
+    for (uint32_t j = 0; j < m; ++j)
+      if (from[j] == to[cur]) next = j;
+    if (step + 1 == m) {
+      if (closed ? next != 0 : next != kNone) return VertexKind::NonManifold;
+      if (!closed) out.v[m] = to[cur];
+    } else if (next == kNone || (closed && next == 0)) {
+      return VertexKind::NonManifold; // the walk ended early: two fans share v
+    }
+    cur = next;
+  }
+  out.faces = static_cast<int>(m);
+  out.verts = static_cast<int>(closed ? m : m + 1);
+  if (closed) return VertexKind::Interior;
+  return m == 1 ? VertexKind::Corner : VertexKind::Boundary;
+}
+
+bool Topology::has_edge(uint32_t a, uint32_t b, const uint32_t *tris) const {
+  if (count_[b] < count_[a]) std::swap(a, b);
+  const uint32_t *s = faces_of(a);
+  for (uint32_t i = 0; i < count_[a]; ++i) {
+    const uint32_t *t = tris + 3 * s[i];
+    if (t[0] == b || t[1] == b || t[2] == b) return true;
+  }
+  return false;
+}
+
+bool Topology::has_triangle(uint32_t a, uint32_t b, uint32_t c, const uint32_t *tris) const {
+  const uint32_t *s = faces_of(a);
+  for (uint32_t i = 0; i < count_[a]; ++i) {
+    const uint32_t *t = tris + 3 * s[i];
+    bool hb = t[0] == b || t[1] == b || t[2] == b;
+    bool hc = t[0] == c || t[1] == c || t[2] == c;
+    if (hb && hc) return true;
+  }
+  return false;
+}
+
+} // namespace vrs

@@ -1,0 +1,61 @@
+// Vertex -> triangle adjacency that follows removals, and the ordered ring of a vertex.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <vector>
+
+namespace vrs {
+
+constexpr uint32_t kNone = 0xffffffffu;
+// Hard cap of the ring buffers (stack arrays, so the main loop never allocates).
+constexpr int kMaxRing = 64;
+
+enum class VertexKind : uint8_t {
+  Interior,    // closed manifold fan: removable
+  Boundary,    // one open manifold fan of >= 2 triangles: removable on request
+  Corner,      // one triangle only: always kept (removing it deletes the face)
+  NonManifold, // several fans, an edge with > 2 faces, or inconsistent orientation: kept
+  HighValence, // more neighbours than the cap: kept
+  Isolated,    // no triangle
+};
+
+// The neighbours of a vertex in counter-clockwise order (as the triangles are oriented) and the
+// triangle between verts[i] and verts[i+1]. Closed (interior): faces == verts. Open (boundary):
+// verts == faces + 1, verts.front() and verts.back() are the boundary neighbours.
+struct Ring {
+  int verts = 0;
+  int faces = 0;
+  std::array<uint32_t, kMaxRing + 1> v;
+  std::array<uint32_t, kMaxRing> f;
+  bool closed() const { return verts == faces; }
+};
+
+class Topology {
+ public:
+  // `triangles` must hold valid indices with three distinct corners each; it is read, not kept.
+  void build(const std::vector<uint32_t> &triangles, size_t vertex_count);
+
+  uint32_t valence(uint32_t v) const { return count_[v]; } // number of incident triangles
+  const uint32_t *faces_of(uint32_t v) const { return pool_.data() + first_[v]; }
+
+  void add_face(uint32_t v, uint32_t face);
+  void remove_face(uint32_t v, uint32_t face);
+  void clear(uint32_t v) { count_[v] = 0; }
+
+  // Orders the fan of v; `tris` is the live triangle array. Rings longer than max_valence
+  // (<= kMaxRing) are not built and the vertex is reported HighValence.
+  VertexKind ring(uint32_t v, const uint32_t *tris, int max_valence, Ring &out) const;
+
+  bool has_edge(uint32_t a, uint32_t b, const uint32_t *tris) const;
+  bool has_triangle(uint32_t a, uint32_t b, uint32_t c, const uint32_t *tris) const;
+
+ private:
+  void grow(uint32_t v);
+
+  std::vector<uint32_t> pool_; // per-vertex slices of triangle ids, with slack
+  std::vector<uint32_t> first_, count_, capacity_;
+};
+
+} // namespace vrs

@@ -1,0 +1,77 @@
+#include "triangulation.h"
+
+namespace vrs {
+
+bool is_convex(const Vec2 *p, int k) {
+  for (int i = 0; i < k; ++i)
+    if (!(orient2d(p[i], p[(i + 1) % k], p[(i + 2) % k]) > 0)) return false;
+  return true;
+}
+
+double triangle_score(Vec3 a, Vec3 b, Vec3 c, Vec3 n) {
+  double facing = dot(normalized(cross(b - a, c - a)), n);
+  return facing > 0 ? triangle_quality(a, b, c) * facing : 0.0;
+}
+
+void triangulate_fan(const Vec2 *, const Vec3 *q, Vec3 n, int k, Patch &out) {
+  int best = 0;
+  double best_worst = -1;
+  for (int a = 0; a < k; ++a) {
+    double worst = 1;
+    for (int i = 1; i + 1 < k; ++i)
+      worst = std::min(worst, triangle_score(q[a], q[(a + i) % k], q[(a + i + 1) % k], n));
+    if (worst > best_worst) {
+      best_worst = worst;
+      best = a;
+    }
+  }
+  out.count = 0;
+  for (int i = 1; i + 1 < k; ++i)
+    out.tri[out.count++] = {uint8_t(best), uint8_t((best + i) % k), uint8_t((best + i + 1) % k)};
+}
+
+namespace {
+
+// Is x inside or on the triangle (a, b, c), counter-clockwise?
+bool in_triangle(Vec2 a, Vec2 b, Vec2 c, Vec2 x) {
+  return orient2d(a, b, x) >= 0 && orient2d(b, c, x) >= 0 && orient2d(c, a, x) >= 0;
+}
+
+} // namespace
+
+bool triangulate_ears(const Vec2 *p, const Vec3 *q, Vec3 normal, int k, Patch &out) {
+  std::array<uint8_t, kMaxRing + 1> poly;
+  int n = k;
+  for (int i = 0; i < k; ++i)
+    poly[i] = uint8_t(i);
+  out.count = 0;
+  while (n > 3) {
+    int best = -1;
+    double best_quality = -1;
+    for (int i = 0; i < n; ++i) {
+      uint8_t a = poly[(i + n - 1) % n], b = poly[i], c = poly[(i + 1) % n];
+      if (!(orient2d(p[a], p[b], p[c]) > 0)) continue; // reflex or flat corner
+      bool empty = true;
+      for (int j = 0; j < n && empty; ++j) {
+        uint8_t x = poly[j];
+        if (x != a && x != b && x != c && in_triangle(p[a], p[b], p[c], p[x])) empty = false;
+      }
+      if (!empty) continue;
+      double quality = triangle_score(q[a], q[b], q[c], normal);
+      if (quality > best_quality) {
+        best_quality = quality;
+        best = i;
+      }
+    }
+    if (best < 0) return false;
+    out.tri[out.count++] = {poly[(best + n - 1) % n], poly[best], poly[(best + 1) % n]};
+    for (int j = best; j + 1 < n; ++j)
+      poly[j] = poly[j + 1];
+    --n;
+  }
+  if (!(orient2d(p[poly[0]], p[poly[1]], p[poly[2]]) > 0)) return false;
+  out.tri[out.count++] = {poly[0], poly[1], poly[2]};
+  return true;
+}
+
+} // namespace vrs

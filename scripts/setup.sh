@@ -1,0 +1,57 @@
+#!/usr/bin/env bash
+# Installs what a fresh Debian bookworm machine lacks to build and test vrsimplify, then fetches
+# the sources the build reads but the repository never holds (vcglib and MeshLab's headers, from
+# Debian's `meshlab` source package) and the real test meshes (Debian's `libcgal-demo`).
+# Idempotent: a second run only checks.
+set -euo pipefail
+top=$(cd "$(dirname "$0")/.." && pwd)
+third="$top/third_party"
+sudo_=""
+[ "$(id -u)" -eq 0 ] || sudo_="sudo"
+
+want=(build-essential cmake pkg-config git xz-utils libgtest-dev libgmock-dev libbenchmark-dev
+      clang-format libeigen3-dev)
+want+=("$@")
+missing=()
+for p in "${want[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q 'install ok installed' || missing+=("$p")
+done
+
+# `apt-get source` needs a deb-src entry mirroring the machine's own deb entry.
+src_list=/etc/apt/sources.list.d/vrsimplify-deb-src.sources
+need_src=0
+[ -f "$third/meshlab/vcglib/vcg/complex/complex.h" ] || need_src=1
+if [ "$need_src" -eq 1 ] && ! grep -rqs '^Types:.*deb-src\|^deb-src' /etc/apt/sources.list /etc/apt/sources.list.d/; then
+  printf 'Types: deb-src\nURIs: http://deb.debian.org/debian\nSuites: bookworm bookworm-updates\nComponents: main\nSigned-By: /usr/share/keyrings/debian-archive-keyring.gpg\n' |
+    $sudo_ tee "$src_list" >/dev/null
+  missing+=(dpkg-dev)
+fi
+if [ ${#missing[@]} -gt 0 ] || [ "$need_src" -eq 1 ] || [ ! -d "$third/cgal-data" ]; then
+  echo "setup: apt-get update"
+  $sudo_ apt-get update -qq
+fi
+if [ ${#missing[@]} -gt 0 ]; then
+  echo "setup: installing ${missing[*]}"
+  $sudo_ env DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+fi
+
+mkdir -p "$third"
+if [ "$need_src" -eq 1 ]; then
+  echo "setup: fetching Debian's meshlab source package (vcglib, MeshLab headers)"
+  tmp=$(mktemp -d)
+  (cd "$tmp" && apt-get source --download-only meshlab >/dev/null 2>&1)
+  orig=$(ls "$tmp"/meshlab_*.orig.tar.xz | head -n 1)
+  rm -rf "$third/meshlab" && mkdir -p "$third/meshlab"
+  tar -xJf "$orig" -C "$third/meshlab" --strip-components=1
+  rm -rf "$tmp"
+fi
+
+if [ ! -d "$third/cgal-data" ]; then
+  echo "setup: fetching Debian's libcgal-demo data set (real test meshes)"
+  tmp=$(mktemp -d)
+  (cd "$tmp" && apt-get download libcgal-demo >/dev/null 2>&1 && dpkg -x libcgal-demo_*.deb x)
+  mkdir -p "$third/cgal-data"
+  tar -xzf "$tmp/x/usr/share/doc/libcgal-dev/data.tar.gz" -C "$third/cgal-data"
+  rm -rf "$tmp"
+fi
+echo "setup: ok"

@@ -1,0 +1,17 @@
+#!/usr/bin/env bash
+# Sets up, builds and runs every test: the Release build in build/, then the same tests built
+# with AddressSanitizer + UndefinedBehaviorSanitizer in build/asan/.
+#   scripts/test.sh [--no-sanitizers]
+set -euo pipefail
+top=$(cd "$(dirname "$0")/.." && pwd)
+"$top/scripts/setup.sh"
+"$top/scripts/build.sh" -DVRS_BUILD_TESTS=ON
+(cd "$top/build" && ctest --output-on-failure -j "$(nproc)")
+if [ "${1:-}" != "--no-sanitizers" ]; then
+  echo "== the same tests under AddressSanitizer + UndefinedBehaviorSanitizer"
+  cmake -S "$top" -B "$top/build/asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVRS_SANITIZE=ON \
+    -DVRS_BUILD_TESTS=ON >/dev/null
+  cmake --build "$top/build/asan" -j "$(nproc)"
+  (cd "$top/build/asan" && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
+    ctest --output-on-failure -j "$(nproc)")
+fi

@@ -1,0 +1,102 @@
+#!/usr/bin/env bash
+# The command-line tool end to end: every file format in and out, per-vertex attributes kept
+# bit for bit, the JSON report, and the exit codes of bad calls.
+#   test_cli.sh VRSIMPLIFY MESHES_DIR CGAL_DATA_DIR OUT_DIR
+set -u
+bin=$1 meshes=$2 out=$4
+rm -rf "$out" && mkdir -p "$out"
+passed=0 failed=0
+ok() { passed=$((passed + 1)); }
+fail() { failed=$((failed + 1)); echo "FAIL: $*"; }
+json_num() { grep -oE "\"$2\":[0-9.eE+-]+" "$1" | head -n 1 | cut -d: -f2; }
+
+in=$meshes/fandisk.off
+faces_in=12946
+
+# 1. Every output format, and reading each back (round trip through vcglib's readers).
+for ext in ply off obj stl; do
+  if "$bin" "$in" "$out/f10.$ext" --ratio 0.1 --json >"$out/f10.$ext.json" 2>"$out/err"; then
+    got=$(json_num "$out/f10.$ext.json" output_faces)
+    [ -s "$out/f10.$ext" ] && [ "$got" -le 1295 ] && [ "$got" -ge 1290 ] && ok ||
+      fail "$ext: output $got faces or missing file"
+    "$bin" "$out/f10.$ext" "$out/back.ply" --ratio 1 --json >"$out/back.json" 2>>"$out/err" &&
+      [ "$(json_num "$out/back.json" input_faces)" = "$got" ] && ok ||
+      fail "$ext: reading the output back gives $(json_num "$out/back.json" input_faces) faces, not $got"
+  else
+    fail "$ext: exit $? $(cat "$out/err")"
+  fi
+done
+
+# 2. STL is a triangle soup: read back, its corners are merged and it simplifies again.
+"$bin" "$out/f10.stl" "$out/f10-again.ply" --ratio 0.5 --json >"$out/stl.json" &&
+  [ "$(json_num "$out/stl.json" output_faces)" -le 646 ] && ok || fail "stl input did not simplify"
+
+# 3. ASCII and binary PLY input give the same result.
+"$bin" "$in" "$out/a.ply" --ratio 1 --ascii >/dev/null && "$bin" "$in" "$out/b.ply" --ratio 1 >/dev/null
+"$bin" "$out/a.ply" "$out/a1.off" --ratio 0.2 >/dev/null && "$bin" "$out/b.ply" "$out/b1.off" --ratio 0.2 >/dev/null &&
+  cmp -s "$out/a1.off" "$out/b1.off" && ok || fail "ascii and binary PLY inputs differ"
+
+# 4. Vertex colors: every output vertex, with its color, is an input vertex with that color.
+awk 'NF == 0 { next } ++n == 1 { next } n == 2 { nv = $1; nf = $2;
+       print "ply\nformat ascii 1.0\nelement vertex " nv;
+       print "property float x\nproperty float y\nproperty float z";
+       print "property uchar red\nproperty uchar green\nproperty uchar blue\nproperty uchar alpha";
+       print "element face " nf "\nproperty list uchar int vertex_indices\nend_header"; next }
+     n > 2 && n <= 2 + nv { printf "%s %s %s %d %d %d 255\n", $1, $2, $3, (n * 7) % 256, (n * 13) % 256, (n * 29) % 256; next }
+     n > 2 + nv { print }' "$in" >"$out/colored.ply"
+"$bin" "$out/colored.ply" "$out/colored-out.ply" --ratio 0.1 --ascii >/dev/null
+norm() { # vertex lines of an ascii PLY, numbers normalised
+  awk '/^end_header/ { body = 1; next } body && n < nv { printf "%.6g %.6g %.6g %d %d %d\n", $1, $2, $3, $4, $5, $6; n++ }
+       /^element vertex/ { nv = $3 }' "$1" | sort
+}
+norm "$out/colored.ply" >"$out/in.vtx"
+norm "$out/colored-out.ply" >"$out/out.vtx"
+n_out=$(wc -l <"$out/out.vtx")
+[ "$n_out" -gt 100 ] && [ "$n_out" -lt 1000 ] && [ -z "$(comm -13 "$out/in.vtx" "$out/out.vtx")" ] && ok ||
+  fail "colored output has $n_out vertices, or vertices/colors not in the input"
+
+# 5. The JSON report has every field the benchmark and the README read.
+for field in input_vertices input_faces output_vertices output_faces seconds_simplify seconds_total \
+  rejected_total stop_reason target_reached fold edge_exists flip degenerate triangle_exists; do
+  grep -q "\"$field\"" "$out/f10.ply.json" && ok || fail "json lacks $field"
+done
+
+# 6. Every target kind and option is accepted and does what it says.
+for args in "--faces 3000" "--vertices 2000" "--max-factor 0.0001" "--auto" "--auto --intervals 50" \
+  "--ratio 0.2 --queue heap" "--ratio 0.2 --mapping log" "--ratio 0.2 --mode terrain" \
+  "--ratio 0.2 --mode planar" "--ratio 0.2 --simplify-boundary"; do
+  # shellcheck disable=SC2086
+  if "$bin" "$in" "$out/t.ply" $args --json >"$out/t.json" 2>"$out/err"; then
+    f=$(json_num "$out/t.json" output_faces)
+    [ "$f" -lt "$faces_in" ] && ok || fail "$args: nothing removed"
+  else
+    fail "$args: exit $?: $(cat "$out/err")"
+  fi
+done
+"$bin" "$in" "$out/t.ply" --faces 3000 --json | grep -q '"output_faces":300[0-9]\|"output_faces":2999' && ok ||
+  fail "--faces 3000 not met"
+
+# 7. Bad calls: clear message, documented exit code, no output written.
+expect_exit() { # code, words, args...
+  local code=$1 words=$2; shift 2
+  rm -f "$out/never.ply"
+  "$@" >"$out/o" 2>"$out/e"
+  local got=$?
+  [ "$got" = "$code" ] && grep -qi -- "$words" "$out/e" && [ ! -e "$out/never.ply" ] && ok ||
+    fail "expected exit $code with '$words' from '$*', got $got: $(head -c 300 "$out/e")"
+}
+expect_exit 3 "cannot read" "$bin" "$out/missing.off" "$out/never.ply"
+expect_exit 2 "unknown option" "$bin" "$in" "$out/never.ply" --frobnicate
+expect_exit 2 "at most one target" "$bin" "$in" "$out/never.ply" --faces 10 --auto
+expect_exit 2 "--ratio needs" "$bin" "$in" "$out/never.ply" --ratio abc
+expect_exit 1 "ratio must be in" "$bin" "$in" "$out/never.ply" --ratio 2
+expect_exit 2 "--mode must be" "$bin" "$in" "$out/never.ply" --mode cubist
+expect_exit 1 "intervals" "$bin" "$in" "$out/never.ply" --intervals 1
+expect_exit 2 "required" "$bin" "$in"
+expect_exit 3 "cannot write" "$bin" "$in" "$out/no/such/dir/x.ply"
+printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n' >"$out/bad-index.off"
+"$bin" "$out/bad-index.off" "$out/never.ply" >"$out/o" 2>"$out/e"; code=$?
+[ "$code" -ne 0 ] && [ ! -e "$out/never.ply" ] && ok || fail "out-of-range index in a file accepted (exit $code)"
+
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]

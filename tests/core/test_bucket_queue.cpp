@@ -1,0 +1,135 @@
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <random>
+#include <vector>
+
+#include "bucket_queue.h"
+#include "heap_queue.h"
+
+using namespace vrs;
+
+namespace {
+
+IntervalMap linear(int n, double f_max) {
+  IntervalMap m;
+  m.n = n;
+  m.f_max = f_max;
+  return m;
+}
+
+template <class Q> std::vector<uint32_t> drain(Q &q) {
+  std::vector<uint32_t> out;
+  while (!q.empty()) {
+    uint32_t v = q.front();
+    q.erase(v);
+    out.push_back(v);
+  }
+  return out;
+}
+
+} // namespace
+
+TEST(IntervalMap, LinearSplitsTheRangeEvenlyAndClampsToTheLast) {
+  IntervalMap m = linear(10, 1.0);
+  EXPECT_EQ(m.interval_of(0.0), 0);
+  EXPECT_EQ(m.interval_of(0.05), 0);
+  EXPECT_EQ(m.interval_of(0.15), 1);
+  EXPECT_EQ(m.interval_of(0.95), 9);
+  EXPECT_EQ(m.interval_of(7.0), 9);
+}
+
+TEST(IntervalMap, LogarithmicResolvesSmallFactors) {
+  IntervalMap m = linear(12, 1.0);
+  m.kind = IntervalMapping::Logarithmic;
+  // Six decades over twelve intervals: two per decade.
+  EXPECT_EQ(m.interval_of(1e-7), 0);
+  EXPECT_EQ(m.interval_of(2e-6), 0);
+  EXPECT_EQ(m.interval_of(2e-5), 2);
+  EXPECT_EQ(m.interval_of(2e-3), 6);
+  EXPECT_EQ(m.interval_of(1.0), 11);
+  EXPECT_LT(m.interval_of(1e-4), m.interval_of(1e-3));
+}
+
+TEST(BucketQueue, PopsTheLowestIntervalFirstAndFifoInside) {
+  BucketQueue q;
+  q.init(6, linear(4, 1.0));
+  q.push(0, 0.9);
+  q.push(1, 0.1);
+  q.push(2, 0.6);
+  q.push(3, 0.15); // same interval as 1, after it
+  q.push(4, 0.05); // same interval as 1, after 3
+  EXPECT_EQ(drain(q), (std::vector<uint32_t>{1, 3, 4, 2, 0}));
+}
+
+TEST(BucketQueue, ReEvaluatedVertexGoesToTheBackOfItsInterval) {
+  BucketQueue q;
+  q.init(4, linear(4, 1.0));
+  q.push(0, 0.1);
+  q.push(1, 0.1);
+  q.push(2, 0.1);
+  q.push(0, 0.12); // re-evaluated, same interval
+  EXPECT_EQ(drain(q), (std::vector<uint32_t>{1, 2, 0}));
+}
+
+TEST(BucketQueue, EraseAndOnlyLastLeft) {
+  BucketQueue q;
+  q.init(3, linear(4, 1.0));
+  q.push(0, 0.1);
+  q.push(1, 1.0);
+  EXPECT_FALSE(q.only_last_left());
+  q.erase(0);
+  EXPECT_FALSE(q.contains(0));
+  EXPECT_TRUE(q.only_last_left());
+  q.erase(0); // erasing twice is harmless
+  EXPECT_EQ(q.size(), 1u);
+}
+
+TEST(BucketQueue, RespreadRestoresOrderInsideTheLastInterval) {
+  BucketQueue q;
+  q.init(3, linear(4, 1.0));
+  std::vector<float> f = {5.0f, 2.0f, 1.0f};
+  for (uint32_t v = 0; v < 3; ++v)
+    q.push(v, f[v]); // all beyond f_max: last interval
+  EXPECT_TRUE(q.only_last_left());
+  q.respread(f.data());
+  EXPECT_FALSE(q.only_last_left());
+  EXPECT_EQ(drain(q), (std::vector<uint32_t>{2, 1, 0}));
+}
+
+TEST(BucketQueue, ManyIntervalsAcrossBitmapWords) {
+  BucketQueue q;
+  q.init(3, linear(300, 300.0));
+  q.push(0, 250.5);
+  q.push(1, 130.5);
+  q.push(2, 64.5);
+  EXPECT_EQ(drain(q), (std::vector<uint32_t>{2, 1, 0}));
+}
+
+TEST(HeapQueue, IsExactAndBreaksTiesByInsertionOrder) {
+  HeapQueue q;
+  q.init(1000, linear(4, 1.0));
+  std::mt19937 rng(7);
+  std::vector<std::pair<double, uint32_t>> ref;
+  for (uint32_t v = 0; v < 1000; ++v) {
+    double f = double(rng() % 50) / 50.0;
+    q.push(v, f);
+    ref.push_back({f, v});
+  }
+  for (uint32_t v = 0; v < 1000; v += 7) { // re-push: goes behind its equals
+    double f = double(rng() % 50) / 50.0;
+    q.push(v, f);
+    auto it = std::find_if(ref.begin(), ref.end(), [&](auto &e) { return e.second == v; });
+    ref.erase(it);
+    ref.push_back({f, v});
+  }
+  for (uint32_t v = 3; v < 1000; v += 11) {
+    q.erase(v);
+    ref.erase(std::find_if(ref.begin(), ref.end(), [&](auto &e) { return e.second == v; }));
+  }
+  std::stable_sort(ref.begin(), ref.end(), [](auto &a, auto &b) { return a.first < b.first; });
+  std::vector<uint32_t> expect;
+  for (auto &e : ref)
+    expect.push_back(e.second);
+  EXPECT_EQ(drain(q), expect);
+}

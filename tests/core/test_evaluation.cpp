@@ -1,0 +1,115 @@
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "evaluation.h"
+#include "test_meshes.h"
+
+using namespace vrs;
+
+namespace {
+
+Evaluation evaluate(const Mesh &m, uint32_t v, Mode mode = Mode::Surface3D, bool line = false) {
+  Topology t;
+  t.build(m.triangles, m.vertex_count());
+  Ring r;
+  t.ring(v, m.triangles.data(), 64, r);
+  Evaluator e(mode, mesh_plane_normal(m.positions.data(), m.triangles), m.positions.data());
+  return e.evaluate(v, r, line);
+}
+
+// A closed fan of k neighbours on the unit circle (z = 0) around a centre at height h.
+Mesh ring_fan(int k, float h) {
+  Mesh m;
+  for (int i = 0; i < k; ++i) {
+    float a = 2 * 3.14159265f * float(i) / float(k);
+    m.positions.insert(m.positions.end(), {std::cos(a), std::sin(a), 0.0f});
+  }
+  m.positions.insert(m.positions.end(), {0, 0, h});
+  for (int i = 0; i < k; ++i)
+    m.triangles.insert(m.triangles.end(), {uint32_t(k), uint32_t(i), uint32_t((i + 1) % k)});
+  return m;
+}
+
+} // namespace
+
+TEST(Evaluation, FlatFanHasZeroFactor) {
+  Evaluation e = evaluate(vrs_test::hexagon_fan(), 6);
+  EXPECT_NEAR(e.factor, 0.0, 1e-7);
+  EXPECT_NEAR(e.normal.z, 1.0, 1e-9);
+}
+
+TEST(Evaluation, RaisedCentreFactorIsItsHeightOverThePlanarRing) {
+  // All neighbour triples lie in z = 0, so the average plane is z = 0 and every neighbour is
+  // h below the vertex along it.
+  EXPECT_NEAR(evaluate(ring_fan(6, 0.25f), 6).factor, 0.25, 1e-6);
+  EXPECT_NEAR(evaluate(ring_fan(9, -0.5f), 9).factor, 0.5, 1e-6);
+}
+
+TEST(Evaluation, SubsetOfTriplesAboveTheCapGivesTheSamePlaneOnAPlanarRing) {
+  const int k = kAllTriplesValence + 8;
+  Evaluation e = evaluate(ring_fan(k, 0.125f), k);
+  EXPECT_NEAR(e.factor, 0.125, 1e-6);
+  EXPECT_NEAR(e.normal.z, 1.0, 1e-9);
+}
+
+TEST(Evaluation, AveragePlaneFollowsATiltedRing) {
+  Mesh m = ring_fan(7, 0.0f);
+  // Tilt everything by 30 degrees about x: the factor of the flat fan stays zero.
+  const float c = std::cos(0.5236f), s = std::sin(0.5236f);
+  for (size_t i = 0; i < m.positions.size(); i += 3) {
+    float y = m.positions[i + 1], z = m.positions[i + 2];
+    m.positions[i + 1] = c * y - s * z;
+    m.positions[i + 2] = s * y + c * z;
+  }
+  Evaluation e = evaluate(m, 7);
+  EXPECT_NEAR(e.factor, 0.0, 1e-6);
+  EXPECT_NEAR(e.normal.y, -s, 1e-6);
+}
+
+TEST(Evaluation, OrientationOfTheTriplesDoesNotCancel) {
+  // The same fan with reversed faces: the plane normal flips with it, the factor does not.
+  Mesh m = ring_fan(8, 0.3f);
+  for (size_t i = 0; i < m.triangles.size(); i += 3)
+    std::swap(m.triangles[i + 1], m.triangles[i + 2]);
+  Evaluation e = evaluate(m, 8);
+  EXPECT_NEAR(e.factor, 0.3, 1e-6);
+  EXPECT_NEAR(e.normal.z, -1.0, 1e-9);
+}
+
+TEST(Evaluation, TerrainFactorIsTheMeanHeightDifference) {
+  Mesh m = ring_fan(4, 1.0f);
+  m.positions[2] = 0.5f; // one neighbour raised: differences 0.5, 1, 1, 1
+  Evaluation e = evaluate(m, 4, Mode::Terrain25D);
+  EXPECT_NEAR(e.factor, (0.5 + 3.0) / 4, 1e-6);
+  EXPECT_EQ(e.normal.z, 1.0);
+}
+
+TEST(Evaluation, TwoNeighboursUseTheDistanceToTheirLine) {
+  Mesh m;
+  m.positions = {0, 0, 0, 2, 0, 0, 1, 0.75f, 0};
+  m.triangles = {0, 1, 2};
+  EXPECT_NEAR(evaluate(m, 2).factor, 0.75, 1e-6);
+  EXPECT_NEAR(distance_to_line({1, 1, 1}, {0, 0, 0}, {0, 0, 5}), std::sqrt(2.0), 1e-12);
+  EXPECT_NEAR(distance_to_line({1, 1, 1}, {0, 0, 0}, {0, 0, 0}), std::sqrt(3.0), 1e-12);
+}
+
+TEST(Evaluation, BoundaryLineDistanceRaisesTheFactorOfABentBoundary) {
+  Mesh m = vrs_test::grid(2);
+  m.positions[3 * 1 + 1] = -0.2f; // bend the bottom boundary at vertex 1 by 23°, in z = 0
+  EXPECT_NEAR(evaluate(m, 1).factor, 0.0, 1e-6);
+  EXPECT_NEAR(evaluate(m, 1, Mode::Surface3D, true).factor, 0.2, 1e-6);
+}
+
+TEST(Evaluation, BoundaryCornerIsKept) {
+  Mesh m = vrs_test::grid(2);
+  m.positions[3 * 1 + 1] = -0.6f; // a 62° turn: a corner of the outline
+  EXPECT_TRUE(std::isinf(evaluate(m, 1, Mode::Surface3D, true).factor));
+  EXPECT_TRUE(std::isinf(evaluate(m, 0, Mode::Surface3D, true).factor)); // the square's corner
+}
+
+TEST(Evaluation, NonFinitePositionGivesNoFactor) {
+  Mesh m = ring_fan(6, 0.1f);
+  m.positions[0] = NAN;
+  EXPECT_TRUE(std::isinf(evaluate(m, 6).factor));
+}

@@ -1,0 +1,233 @@
+// Hand-built meshes with exact expected results, and the options of the entry point.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+
+#include "mesh_checks.h"
+#include "test_meshes.h"
+
+using namespace vrs;
+
+namespace {
+
+Options faces(size_t n) {
+  Options o;
+  o.target.kind = TargetKind::Faces;
+  o.target.faces = n;
+  return o;
+}
+
+double xy_area2(const Mesh &m) {
+  double a = 0;
+  for (size_t i = 0; i < m.triangles.size(); i += 3) {
+    const float *p = &m.positions[3 * m.triangles[i]];
+    const float *q = &m.positions[3 * m.triangles[i + 1]];
+    const float *r = &m.positions[3 * m.triangles[i + 2]];
+    double t = (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]);
+    EXPECT_GT(t, 0) << "face " << i / 3 << " is not counter-clockwise in xy";
+    a += t;
+  }
+  return a;
+}
+
+void expect_valid(const Mesh &in, const Mesh &out, const Report &r) {
+  EXPECT_TRUE(r.ok) << r.message;
+  EXPECT_EQ(vrs_test::check_indices(out), "");
+  EXPECT_EQ(vrs_test::check_subset(in, out, r), "");
+  EXPECT_EQ(vrs_test::count_duplicate_directed_edges(out), 0u);
+}
+
+} // namespace
+
+TEST(Simplify, FlatHexagonLosesItsCentreAndKeepsItsRim) {
+  for (float h : {0.0f, 0.2f}) {
+    Mesh in = vrs_test::hexagon_fan(h), m = in;
+    Report r = simplify(m, faces(4));
+    expect_valid(in, m, r);
+    EXPECT_EQ(r.stop, StopReason::TargetReached);
+    EXPECT_EQ(m.vertex_count(), 6u);
+    EXPECT_EQ(m.face_count(), 4u);
+    EXPECT_EQ(r.remap[6], kRemoved);
+    EXPECT_NEAR(xy_area2(m), xy_area2(vrs_test::hexagon_fan()), 1e-5); // the hole is tiled
+    EXPECT_EQ(vrs_test::check_boundary_kept(in, m, r), "");
+  }
+}
+
+TEST(Simplify, ConcaveRingIsFilledByEarClipping) {
+  Mesh in = vrs_test::concave_fan(), m = in;
+  Report r = simplify(m, faces(0));
+  expect_valid(in, m, r);
+  ASSERT_EQ(m.face_count(), 4u);
+  EXPECT_NEAR(xy_area2(m), xy_area2(in), 1e-5);
+  // The notch (input vertex 3) is reflex: no new triangle may have it inside, i.e. no triangle
+  // spans from vertex 2 to vertex 4 directly across it.
+  for (size_t i = 0; i < m.triangles.size(); i += 3) {
+    auto t = &m.triangles[i];
+    bool has2 = std::count(t, t + 3, r.remap[2]), has4 = std::count(t, t + 3, r.remap[4]);
+    bool has3 = std::count(t, t + 3, r.remap[3]);
+    EXPECT_FALSE(has2 && has4 && !has3);
+  }
+}
+
+TEST(Simplify, TetrahedronCannotLoseAVertex) {
+  Mesh in = vrs_test::tetrahedron(), m = in;
+  Report r = simplify(m, faces(0));
+  expect_valid(in, m, r);
+  EXPECT_EQ(m.face_count(), 4u);
+  EXPECT_EQ(m.triangles, in.triangles);
+  EXPECT_EQ(r.stop, StopReason::NoCandidates);
+  EXPECT_FALSE(r.target_reached);
+  EXPECT_EQ(r.rejected[RejectTriangle], 4u); // each hole's only triangle is the opposite face
+}
+
+TEST(Simplify, OpenSquareKeepsItsBoundary) {
+  Mesh in = vrs_test::grid(8, 0.2f), m = in;
+  Report r = simplify(m, faces(0));
+  expect_valid(in, m, r);
+  EXPECT_EQ(vrs_test::check_boundary_kept(in, m, r), "");
+  EXPECT_EQ(r.kept_boundary, 32u);
+  EXPECT_EQ(r.stop, StopReason::NoCandidates);
+  EXPECT_NEAR(xy_area2(m), 2 * 64.0, 1e-3); // still covers the square, no fold
+  EXPECT_EQ(m.face_count(), 30u);           // 32 boundary vertices, no interior left
+}
+
+TEST(Simplify, BoundarySimplificationKeepsCornersAndShape) {
+  Mesh in = vrs_test::grid(8), m = in;
+  Options o = faces(0);
+  o.simplify_boundary = true;
+  Report r = simplify(m, o);
+  expect_valid(in, m, r);
+  for (uint32_t corner : {0u, 8u, 72u, 80u})
+    EXPECT_NE(r.remap[corner], kRemoved);
+  EXPECT_NEAR(xy_area2(m), 2 * 64.0, 1e-3);
+  EXPECT_LT(m.vertex_count(), 8u); // straight edges: only corners (and a few blocked) stay
+  EXPECT_EQ(vrs_test::edge_stats(m).euler(), vrs_test::edge_stats(in).euler());
+}
+
+TEST(Simplify, EveryTargetKindIsMetAndNotOvershot) {
+  const Mesh in = vrs_test::icosphere(3); // 1280 faces, 642 vertices
+  for (TargetKind kind : {TargetKind::Faces, TargetKind::Vertices, TargetKind::Ratio}) {
+    Mesh m = in;
+    Options o;
+    o.target.kind = kind;
+    o.target.faces = 300;
+    o.target.vertices = 100;
+    o.target.ratio = 0.25;
+    Report r = simplify(m, o);
+    expect_valid(in, m, r);
+    EXPECT_TRUE(r.target_reached);
+    EXPECT_EQ(r.stop, StopReason::TargetReached);
+    // Closed mesh: each removal takes 2 faces and 1 vertex, and it stops as soon as it can.
+    const size_t expect_faces = kind == TargetKind::Faces   ? 300
+                                : kind == TargetKind::Ratio ? 320
+                                                            : 196;
+    EXPECT_EQ(m.face_count(), expect_faces); // 1280 - 2k lands on each target exactly
+    EXPECT_EQ(m.vertex_count(), expect_faces / 2 + 2);
+  }
+}
+
+TEST(Simplify, MaxFactorRemovesOnlyVerticesUnderIt) {
+  const Mesh in = vrs_test::icosphere(3);
+  Mesh m = in;
+  Options o;
+  o.target.kind = TargetKind::MaxFactor;
+  o.target.max_factor = 0.01;
+  Report r = simplify(m, o);
+  expect_valid(in, m, r);
+  EXPECT_EQ(r.stop, StopReason::MaxFactor);
+  EXPECT_GT(r.removed, 0u);
+  EXPECT_LE(r.max_removed_factor, 0.01);
+  Mesh none = in;
+  o.target.max_factor = 1e-6; // below every vertex of the sphere
+  EXPECT_EQ(simplify(none, o).removed, 0u);
+}
+
+TEST(Simplify, AutoStopsWhenOnlyTheLastIntervalIsLeft) {
+  // Two intervals: the last holds factors >= f_max / 2, so a flat terrain with one tall spike
+  // keeps the spike and whatever the removals push above half of it, and removes the rest.
+  Mesh in = vrs_test::grid(20, 0.2f);
+  const uint32_t spike = 10 * 21 + 10;
+  in.positions[3 * spike + 2] = 5.0f;
+  for (int intervals : {2, 1000}) {
+    Mesh m = in;
+    Options o;
+    o.target.kind = TargetKind::Auto;
+    o.intervals = intervals;
+    Report r = simplify(m, o);
+    expect_valid(in, m, r);
+    EXPECT_EQ(r.stop, StopReason::LastInterval);
+    EXPECT_TRUE(r.target_reached);
+    EXPECT_NE(r.remap[spike], kRemoved);
+    EXPECT_LT(m.face_count(), in.face_count() / 4);
+  }
+}
+
+TEST(Simplify, LockedVerticesStay) {
+  const Mesh in = vrs_test::icosphere(2);
+  std::vector<uint8_t> lock(in.vertex_count(), 0);
+  for (size_t v = 0; v < lock.size(); v += 3)
+    lock[v] = 1;
+  Mesh m = in;
+  Options o = faces(0);
+  o.locked = &lock;
+  Report r = simplify(m, o);
+  expect_valid(in, m, r);
+  for (size_t v = 0; v < lock.size(); ++v)
+    if (lock[v]) {
+      EXPECT_NE(r.remap[v], kRemoved) << v;
+    }
+  EXPECT_GT(r.removed, 0u);
+}
+
+TEST(Simplify, SameInputSameOutput) {
+  const Mesh in = vrs_test::terrain(40);
+  for (QueueKind q : {QueueKind::Intervals, QueueKind::Heap}) {
+    Mesh a = in, b = in;
+    Options o;
+    o.target.ratio = 0.1;
+    o.queue = q;
+    simplify(a, o);
+    simplify(b, o);
+    EXPECT_EQ(a.positions, b.positions);
+    EXPECT_EQ(a.triangles, b.triangles);
+  }
+}
+
+TEST(Simplify, ProgressIsReportedAndCanStopTheRunWithAValidMesh) {
+  const Mesh in = vrs_test::icosphere(4);
+  Mesh m = in;
+  Options o;
+  o.target.ratio = 0.05;
+  std::vector<float> seen;
+  o.progress = [&](float f) {
+    seen.push_back(f);
+    return seen.size() < 5;
+  };
+  Report r = simplify(m, o);
+  expect_valid(in, m, r);
+  EXPECT_EQ(r.stop, StopReason::Cancelled);
+  EXPECT_FALSE(r.target_reached);
+  ASSERT_EQ(seen.size(), 5u);
+  EXPECT_TRUE(std::is_sorted(seen.begin(), seen.end()));
+  EXPECT_GT(m.face_count(), size_t(0.05 * in.face_count()));
+  EXPECT_LT(m.face_count(), in.face_count());
+  EXPECT_EQ(vrs_test::edge_stats(m).euler(), 2);
+  EXPECT_EQ(vrs_test::edge_stats(m).boundary, 0u);
+}
+
+TEST(Simplify, HeapAndLogarithmicMappingReachTheTarget) {
+  const Mesh in = vrs_test::icosphere(4);
+  for (int variant = 0; variant < 2; ++variant) {
+    Mesh m = in;
+    Options o;
+    o.target.ratio = 0.02;
+    if (variant)
+      o.queue = QueueKind::Heap;
+    else
+      o.mapping = IntervalMapping::Logarithmic;
+    Report r = simplify(m, o);
+    expect_valid(in, m, r);
+    EXPECT_TRUE(r.target_reached);
+    EXPECT_EQ(vrs_test::edge_stats(m).euler(), 2);
+  }
+}

@@ -1,0 +1,169 @@
+#include "test_meshes.h"
+
+#include <cmath>
+#include <fstream>
+#include <map>
+#include <sstream>
+#include <utility>
+#include <vector>
+
+#ifndef VRS_CGAL_DATA
+#define VRS_CGAL_DATA ""
+#endif
+
+namespace vrs_test {
+
+namespace {
+
+bool next_line(std::istream &in, std::string &line) {
+  while (std::getline(in, line)) {
+    size_t hash = line.find('#');
+    if (hash != std::string::npos) line.resize(hash);
+    if (line.find_first_not_of(" \t\r") != std::string::npos) return true;
+  }
+  return false;
+}
+
+} // namespace
+
+vrs::Mesh read_off(const std::string &path) {
+  vrs::Mesh m;
+  std::ifstream in(path);
+  std::string line;
+  if (!next_line(in, line) || line.find("OFF") == std::string::npos) return {};
+  std::istringstream header(line.substr(line.find("OFF") + 3));
+  size_t nv = 0, nf = 0;
+  if (!(header >> nv >> nf)) {
+    if (!next_line(in, line)) return {};
+    std::istringstream counts(line);
+    if (!(counts >> nv >> nf)) return {};
+  }
+  for (size_t i = 0; i < nv; ++i) {
+    if (!next_line(in, line)) return {};
+    std::istringstream s(line);
+    float x, y, z;
+    if (!(s >> x >> y >> z)) return {};
+    m.positions.insert(m.positions.end(), {x, y, z});
+  }
+  for (size_t i = 0; i < nf; ++i) {
+    if (!next_line(in, line)) return {};
+    std::istringstream s(line);
+    size_t n;
+    s >> n;
+    std::vector<uint32_t> poly(n);
+    for (auto &p : poly)
+      s >> p;
+    if (!s) return {};
+    for (size_t j = 1; j + 1 < n; ++j)
+      m.triangles.insert(m.triangles.end(), {poly[0], poly[j], poly[j + 1]});
+  }
+  return m;
+}
+
+std::string cgal_mesh(const std::string &name) {
+  std::string path = std::string(VRS_CGAL_DATA) + "/" + name;
+  std::ifstream f(path);
+  return f ? path : std::string();
+}
+
+vrs::Mesh hexagon_fan(float h) {
+  vrs::Mesh m;
+  for (int i = 0; i < 6; ++i) {
+    float a = float(i) * 3.14159265f / 3.0f;
+    m.positions.insert(m.positions.end(), {std::cos(a), std::sin(a), 0.0f});
+  }
+  m.positions.insert(m.positions.end(), {0.0f, 0.0f, h});
+  for (uint32_t i = 0; i < 6; ++i)
+    m.triangles.insert(m.triangles.end(), {6u, i, (i + 1) % 6});
+  return m;
+}
+
+vrs::Mesh concave_fan() {
+  // Ring (counter-clockwise): an arrow whose notch at vertex 3 makes it concave, star-shaped
+  // from the centre (index 6) placed near the notch.
+  vrs::Mesh m;
+  m.positions = {2, 0, 0, 2, 2, 0, 0, 3, 0, -0.3f, 1.2f, 0, -2, 2, 0, -2, 0, 0, 0, 0.5f, 0};
+  for (uint32_t i = 0; i < 6; ++i)
+    m.triangles.insert(m.triangles.end(), {6u, i, (i + 1) % 6});
+  return m;
+}
+
+vrs::Mesh tetrahedron() {
+  vrs::Mesh m;
+  m.positions = {1, 1, 1, 1, -1, -1, -1, 1, -1, -1, -1, 1}; // regular, centred at the origin
+  m.triangles = {0, 1, 2, 0, 3, 1, 0, 2, 3, 1, 3, 2};
+  return m;
+}
+
+vrs::Mesh grid(int n, float jitter) {
+  vrs::Mesh m;
+  for (int y = 0; y <= n; ++y)
+    for (int x = 0; x <= n; ++x) {
+      bool inner = x > 0 && y > 0 && x < n && y < n;
+      float jx = inner ? jitter * std::sin(float(x * 7 + y * 13)) : 0.0f;
+      float jy = inner ? jitter * std::cos(float(x * 11 + y * 5)) : 0.0f;
+      m.positions.insert(m.positions.end(), {float(x) + jx, float(y) + jy, 0.0f});
+    }
+  auto id = [n](int x, int y) { return uint32_t(y * (n + 1) + x); };
+  for (int y = 0; y < n; ++y)
+    for (int x = 0; x < n; ++x) {
+      m.triangles.insert(m.triangles.end(), {id(x, y), id(x + 1, y), id(x + 1, y + 1)});
+      m.triangles.insert(m.triangles.end(), {id(x, y), id(x + 1, y + 1), id(x, y + 1)});
+    }
+  return m;
+}
+
+vrs::Mesh terrain(int n) {
+  vrs::Mesh m = grid(n);
+  for (size_t i = 0; i < m.positions.size(); i += 3) {
+    float x = m.positions[i] / float(n), y = m.positions[i + 1] / float(n);
+    m.positions[i + 2] =
+        float(n) * 0.2f *
+        (std::exp(-30 * ((x - 0.3f) * (x - 0.3f) + (y - 0.4f) * (y - 0.4f))) +
+         0.6f * std::exp(-50 * ((x - 0.7f) * (x - 0.7f) + (y - 0.7f) * (y - 0.7f))) +
+         0.05f * std::sin(12 * x) * std::cos(9 * y));
+  }
+  return m;
+}
+
+vrs::Mesh icosphere(int level) {
+  const float t = (1.0f + std::sqrt(5.0f)) / 2.0f;
+  vrs::Mesh m;
+  m.positions = {-1, t,  0,  1, t, 0,  -1, -t, 0,  1, -t, 0, 0,  -1, t,  0,  1, t,
+                 0,  -1, -t, 0, 1, -t, t,  0,  -1, t, 0,  1, -t, 0,  -1, -t, 0, 1};
+  m.triangles = {0, 11, 5,  0, 5,  1, 0, 1, 7, 0, 7,  10, 0, 10, 11, 1, 5, 9, 5, 11,
+                 4, 11, 10, 2, 10, 7, 6, 7, 1, 8, 3,  9,  4, 3,  4,  2, 3, 2, 6, 3,
+                 6, 8,  3,  8, 9,  4, 9, 5, 2, 4, 11, 6,  2, 10, 8,  6, 7, 9, 8, 1};
+  auto normalize = [&](uint32_t v) {
+    float *p = &m.positions[3 * v];
+    float l = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
+    for (int c = 0; c < 3; ++c)
+      p[c] /= l;
+  };
+  for (uint32_t v = 0; v < 12; ++v)
+    normalize(v);
+  for (int l = 0; l < level; ++l) {
+    std::map<std::pair<uint32_t, uint32_t>, uint32_t> mid;
+    auto midpoint = [&](uint32_t a, uint32_t b) {
+      auto key = std::minmax(a, b);
+      auto it = mid.find(key);
+      if (it != mid.end()) return it->second;
+      uint32_t v = uint32_t(m.positions.size() / 3);
+      for (int c = 0; c < 3; ++c)
+        m.positions.push_back((m.positions[3 * a + c] + m.positions[3 * b + c]) / 2);
+      normalize(v);
+      mid[key] = v;
+      return v;
+    };
+    std::vector<uint32_t> next;
+    for (size_t i = 0; i < m.triangles.size(); i += 3) {
+      uint32_t a = m.triangles[i], b = m.triangles[i + 1], c = m.triangles[i + 2];
+      uint32_t ab = midpoint(a, b), bc = midpoint(b, c), ca = midpoint(c, a);
+      next.insert(next.end(), {a, ab, ca, b, bc, ab, c, ca, bc, ab, bc, ca});
+    }
+    m.triangles = next;
+  }
+  return m;
+}
+
+} // namespace vrs_test

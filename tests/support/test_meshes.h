@@ -1,0 +1,28 @@
+// Meshes for the tests: a small OFF reader for CGAL's real data, hand-built cases, generators.
+#pragma once
+
+#include <string>
+
+#include "vrs/simplify.h"
+
+namespace vrs_test {
+
+// Reads an OFF file (OFF/COFF/NOFF, comments, polygons fan-triangulated). Empty on failure.
+vrs::Mesh read_off(const std::string &path);
+// Path of a mesh of CGAL's data set (VRS_CGAL_DATA), or "" when the data set is missing.
+std::string cgal_mesh(const std::string &name);
+
+// Flat regular hexagon around one centre vertex (index 6), in the z = 0 plane.
+vrs::Mesh hexagon_fan(float centre_height = 0.0f);
+// Closed fan whose ring is the concave "arrow" polygon: needs ear clipping, not a fan.
+vrs::Mesh concave_fan();
+vrs::Mesh tetrahedron();
+// Open n x n grid of squares (two triangles each) in the z = 0 plane, jittered deterministically
+// in xy so that the interior is not degenerate for the fan chooser.
+vrs::Mesh grid(int n, float jitter = 0.0f);
+// Height field z = f(x, y) on an n x n grid: a smooth sum of bumps.
+vrs::Mesh terrain(int n);
+// Icosphere: 20 * 4^level triangles, closed, genus 0.
+vrs::Mesh icosphere(int level);
+
+} // namespace vrs_test

@@ -1,0 +1,185 @@
+// vrsimplify: simplify a mesh file with the core library.
+//   vrsimplify INPUT OUTPUT [target] [options]   (see usage())
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <string>
+
+#include "mesh_io.h"
+#include "vrs/simplify.h"
+
+namespace {
+
+const char *kUsage =
+    "usage: vrsimplify INPUT OUTPUT [target] [options]\n"
+    "  files: .ply (ascii or binary), .off, .obj, .stl\n"
+    "target (one; default --ratio 0.5):\n"
+    "  --ratio R          keep R (0..1) of the input faces\n"
+    "  --faces N          stop at N faces or fewer\n"
+    "  --vertices N       stop at N vertices or fewer\n"
+    "  --max-factor F     remove only vertices with evaluation factor <= F (mesh units)\n"
+    "  --auto             stop when only the last interval of the hash table is left\n"
+    "options:\n"
+    "  --mode surface|terrain|planar   3D average plane (default), 2.5D XY plane, 2D mesh plane\n"
+    "  --intervals N                   hash-table intervals (default 1000)\n"
+    "  --mapping linear|log            factor -> interval mapping (default linear)\n"
+    "  --queue intervals|heap          hash table (default) or exact heap (reference)\n"
+    "  --simplify-boundary             also remove boundary vertices (default: kept)\n"
+    "  --json                          print one JSON line instead of the text report\n"
+    "  --ascii                         write ascii PLY (default binary)\n";
+
+int usage_error(const std::string &msg) {
+  std::fprintf(stderr, "vrsimplify: %s\n%s", msg.c_str(), kUsage);
+  return 2;
+}
+
+bool parse_double(const char *s, double &out) {
+  char *end = nullptr;
+  out = std::strtod(s, &end);
+  return end != s && *end == '\0' && std::isfinite(out);
+}
+
+bool parse_count(const char *s, size_t &out) {
+  if (*s == '-' || *s == '\0') return false;
+  char *end = nullptr;
+  unsigned long long v = std::strtoull(s, &end, 10);
+  out = static_cast<size_t>(v);
+  return *end == '\0';
+}
+
+void print_json(const vrs::Report &r, double seconds_simplify, double seconds_total) {
+  std::printf("{\"ok\":%s,\"input_vertices\":%zu,\"input_faces\":%zu,\"output_vertices\":%zu,"
+              "\"output_faces\":%zu,\"removed\":%zu,\"seconds_simplify\":%.6f,"
+              "\"seconds_total\":%.6f,\"rejected\":{",
+              r.ok ? "true" : "false", r.input_vertices, r.input_faces, r.vertices, r.faces,
+              r.removed, seconds_simplify, seconds_total);
+  for (int i = 0; i < vrs::RejectCount; ++i)
+    std::printf("%s\"%s\":%zu", i ? "," : "", vrs::reject_name(vrs::Reject(i)), r.rejected[i]);
+  std::printf("},\"rejected_total\":%zu,\"stop_reason\":\"%s\",\"target_reached\":%s,"
+              "\"max_removed_factor\":%.9g,\"kept\":{\"boundary\":%zu,\"nonmanifold\":%zu,"
+              "\"locked\":%zu,\"high_valence\":%zu},\"input_issues\":{\"degenerate_faces\":%zu,"
+              "\"nonfinite_vertices\":%zu,\"unreferenced_vertices\":%zu}}\n",
+              r.rejected_total(), vrs::stop_reason_name(r.stop),
+              r.target_reached ? "true" : "false", r.max_removed_factor, r.kept_boundary,
+              r.kept_nonmanifold, r.kept_locked, r.kept_high_valence, r.dropped_degenerate_faces,
+              r.nonfinite_vertices, r.unreferenced_vertices);
+}
+
+void print_text(const vrs::Report &r, double seconds_simplify, double seconds_total) {
+  std::printf("input:   %zu vertices, %zu faces\n", r.input_vertices, r.input_faces);
+  std::printf("output:  %zu vertices, %zu faces (%zu vertices removed)\n", r.vertices, r.faces,
+              r.removed);
+  std::printf("time:    %.3f s simplify, %.3f s total\n", seconds_simplify, seconds_total);
+  std::printf("rejected removals: %zu (", r.rejected_total());
+  for (int i = 0; i < vrs::RejectCount; ++i)
+    std::printf("%s%s %zu", i ? ", " : "", vrs::reject_name(vrs::Reject(i)), r.rejected[i]);
+  std::printf(")\nstopped: %s, target %s\n", vrs::stop_reason_name(r.stop),
+              r.target_reached ? "reached" : "NOT reached");
+  if (!r.message.empty()) std::printf("note:    %s\n", r.message.c_str());
+}
+
+} // namespace
+
+int main(int argc, char **argv) {
+  using clock = std::chrono::steady_clock;
+  const auto t0 = clock::now();
+  std::string in, out;
+  vrs::Options opt;
+  bool json = false, ascii = false;
+  int targets = 0;
+  for (int i = 1; i < argc; ++i) {
+    std::string a = argv[i];
+    auto value = [&](const char *) -> const char * {
+      if (i + 1 >= argc) return nullptr;
+      return argv[++i];
+    };
+    const char *v = nullptr;
+    if (a == "--help" || a == "-h") {
+      std::printf("%s", kUsage);
+      return 0;
+    } else if (a == "--json") {
+      json = true;
+    } else if (a == "--ascii") {
+      ascii = true;
+    } else if (a == "--simplify-boundary") {
+      opt.simplify_boundary = true;
+    } else if (a == "--auto") {
+      opt.target.kind = vrs::TargetKind::Auto;
+      ++targets;
+    } else if (a == "--ratio") {
+      if (!(v = value("--ratio")) || !parse_double(v, opt.target.ratio))
+        return usage_error("--ratio needs a number in [0, 1]");
+      opt.target.kind = vrs::TargetKind::Ratio;
+      ++targets;
+    } else if (a == "--faces") {
+      if (!(v = value("--faces")) || !parse_count(v, opt.target.faces))
+        return usage_error("--faces needs a count");
+      opt.target.kind = vrs::TargetKind::Faces;
+      ++targets;
+    } else if (a == "--vertices") {
+      if (!(v = value("--vertices")) || !parse_count(v, opt.target.vertices))
+        return usage_error("--vertices needs a count");
+      opt.target.kind = vrs::TargetKind::Vertices;
+      ++targets;
+    } else if (a == "--max-factor") {
+      if (!(v = value("--max-factor")) || !parse_double(v, opt.target.max_factor))
+        return usage_error("--max-factor needs a number >= 0");
+      opt.target.kind = vrs::TargetKind::MaxFactor;
+      ++targets;
+    } else if (a == "--mode") {
+      if (!(v = value("--mode")) || !vrs::parse_mode(v, opt.mode))
+        return usage_error("--mode must be surface, terrain or planar");
+    } else if (a == "--queue") {
+      if (!(v = value("--queue")) || !vrs::parse_queue(v, opt.queue))
+        return usage_error("--queue must be intervals or heap");
+    } else if (a == "--mapping") {
+      if (!(v = value("--mapping")) || !vrs::parse_mapping(v, opt.mapping))
+        return usage_error("--mapping must be linear or log");
+    } else if (a == "--intervals") {
+      size_t n = 0;
+      if (!(v = value("--intervals")) || !parse_count(v, n) || n > (1u << 20))
+        return usage_error("--intervals needs a count");
+      opt.intervals = static_cast<int>(n);
+    } else if (!a.empty() && a[0] == '-') {
+      return usage_error("unknown option " + a);
+    } else if (in.empty()) {
+      in = a;
+    } else if (out.empty()) {
+      out = a;
+    } else {
+      return usage_error("unexpected argument " + a);
+    }
+  }
+  if (in.empty() || out.empty()) return usage_error("INPUT and OUTPUT are required");
+  if (targets > 1) return usage_error("give at most one target");
+
+  vrs_tool::LoadResult loaded = vrs_tool::load(in);
+  if (!loaded.doc) {
+    std::fprintf(stderr, "vrsimplify: %s\n", loaded.error.c_str());
+    return 3;
+  }
+  vrs::Mesh mesh = vrs_tool::to_core(*loaded.doc);
+  const auto t1 = clock::now();
+  vrs::Report report = vrs::simplify(mesh, opt);
+  const double seconds_simplify = std::chrono::duration<double>(clock::now() - t1).count();
+  if (!report.ok) {
+    std::fprintf(stderr, "vrsimplify: %s\n", report.message.c_str());
+    vrs_tool::close(loaded.doc);
+    return 1;
+  }
+  vrs_tool::apply(*loaded.doc, mesh, report);
+  std::string err = vrs_tool::save(*loaded.doc, out, ascii);
+  vrs_tool::close(loaded.doc);
+  if (!err.empty()) {
+    std::fprintf(stderr, "vrsimplify: %s\n", err.c_str());
+    return 3;
+  }
+  const double seconds_total = std::chrono::duration<double>(clock::now() - t0).count();
+  if (json)
+    print_json(report, seconds_simplify, seconds_total);
+  else
+    print_text(report, seconds_simplify, seconds_total);
+  return 0;
+}
