@@ -12,7 +12,7 @@
 
 namespace {
 
-const char *kUsage =
+const char* kUsage =
     "usage: vrsimplify INPUT OUTPUT [target] [options]\n"
     "  files: .ply (ascii or binary), .off, .obj, .stl\n"
     "target (one; default --ratio 0.5):\n"
@@ -30,26 +30,26 @@ const char *kUsage =
     "  --json                          print one JSON line instead of the text report\n"
     "  --ascii                         write ascii PLY (default binary)\n";
 
-int usage_error(const std::string &msg) {
+int usage_error(const std::string& msg) {
   std::fprintf(stderr, "vrsimplify: %s\n%s", msg.c_str(), kUsage);
   return 2;
 }
 
-bool parse_double(const char *s, double &out) {
-  char *end = nullptr;
+bool parse_double(const char* s, double& out) {
+  char* end = nullptr;
   out = std::strtod(s, &end);
   return end != s && *end == '\0' && std::isfinite(out);
 }
 
-bool parse_count(const char *s, size_t &out) {
+bool parse_count(const char* s, size_t& out) {
   if (*s == '-' || *s == '\0') return false;
-  char *end = nullptr;
+  char* end = nullptr;
   unsigned long long v = std::strtoull(s, &end, 10);
   out = static_cast<size_t>(v);
   return *end == '\0';
 }
 
-void print_json(const vrs::Report &r, double seconds_simplify, double seconds_total) {
+void print_json(const vrs::Report& r, double seconds_simplify, double seconds_total) {
   std::printf("{\"ok\":%s,\"input_vertices\":%zu,\"input_faces\":%zu,\"output_vertices\":%zu,"
               "\"output_faces\":%zu,\"removed\":%zu,\"seconds_simplify\":%.6f,"
               "\"seconds_total\":%.6f,\"rejected\":{",
@@ -67,7 +67,7 @@ void print_json(const vrs::Report &r, double seconds_simplify, double seconds_to
               r.nonfinite_vertices, r.unreferenced_vertices);
 }
 
-void print_text(const vrs::Report &r, double seconds_simplify, double seconds_total) {
+void print_text(const vrs::Report& r, double seconds_simplify, double seconds_total) {
   std::printf("input:   %zu vertices, %zu faces\n", r.input_vertices, r.input_faces);
   std::printf("output:  %zu vertices, %zu faces (%zu vertices removed)\n", r.vertices, r.faces,
               r.removed);
@@ -82,7 +82,7 @@ void print_text(const vrs::Report &r, double seconds_simplify, double seconds_to
 
 } // namespace
 
-int main(int argc, char **argv) {
+int main(int argc, char** argv) {
   using clock = std::chrono::steady_clock;
   const auto t0 = clock::now();
   std::string in, out;
@@ -91,11 +91,11 @@ int main(int argc, char **argv) {
   int targets = 0;
   for (int i = 1; i < argc; ++i) {
     std::string a = argv[i];
-    auto value = [&](const char *) -> const char * {
+    auto value = [&](const char*) -> const char* {
       if (i + 1 >= argc) return nullptr;
       return argv[++i];
     };
-    const char *v = nullptr;
+    const char* v = nullptr;
     if (a == "--help" || a == "-h") {
       std::printf("%s", kUsage);
       return 0;

@@ -2,7 +2,7 @@
 
 namespace vrs {
 
-void BucketQueue::init(size_t vertex_count, const IntervalMap &map) {
+void BucketQueue::init(size_t vertex_count, const IntervalMap& map) {
   map_ = map;
   next_.assign(vertex_count, kNone);
   prev_.assign(vertex_count, kNone);
@@ -58,7 +58,7 @@ uint32_t BucketQueue::front() const {
   return i < 0 ? kNone : head_[i];
 }
 
-void BucketQueue::respread(const float *factor) {
+void BucketQueue::respread(const float* factor) {
   // Collect in queue order (interval by interval, FIFO inside), then re-append in that order.
   std::vector<uint32_t> order;
   order.reserve(size_);

@@ -12,7 +12,7 @@ namespace vrs {
 
 class BucketQueue {
  public:
-  void init(size_t vertex_count, const IntervalMap &map);
+  void init(size_t vertex_count, const IntervalMap& map);
 
   // Appends v at the end of the interval of `factor` (re-evaluated vertices go to the back:
   // this spreads removals over the mesh instead of eating one region).
@@ -29,9 +29,9 @@ class BucketQueue {
   // Re-maps every queued vertex over [0, max factor of the queue], keeping their order. Used
   // when a count target is not met and only the last interval is left: the bucket order is
   // then no order at all, and a new range restores it. `factor` is indexed by vertex.
-  void respread(const float *factor);
+  void respread(const float* factor);
 
-  const IntervalMap &map() const { return map_; }
+  const IntervalMap& map() const { return map_; }
 
  private:
   int lowest() const;

@@ -11,7 +11,7 @@ double distance_to_line(Vec3 p, Vec3 a, Vec3 b) {
   return length(cross(p - a, d)) / std::sqrt(l2);
 }
 
-Vec3 mesh_plane_normal(const float *pos, const std::vector<uint32_t> &tris) {
+Vec3 mesh_plane_normal(const float* pos, const std::vector<uint32_t>& tris) {
   Vec3 sum;
   for (size_t i = 0; i + 2 < tris.size(); i += 3) {
     auto at = [&](uint32_t v) { return Vec3{pos[3 * v], pos[3 * v + 1], pos[3 * v + 2]}; };
@@ -23,7 +23,7 @@ Vec3 mesh_plane_normal(const float *pos, const std::vector<uint32_t> &tris) {
   return length(n) > 0 ? n : Vec3{0, 0, 1};
 }
 
-Vec3 Evaluator::average_plane_normal(const Vec3 *p, int k, Vec3 fan) const {
+Vec3 Evaluator::average_plane_normal(const Vec3* p, int k, Vec3 fan) const {
   Vec3 sum;
   // Each triple's normal is turned to agree with the fan's normal before averaging; otherwise
   // triples taken in different orders cancel each other.
@@ -45,7 +45,7 @@ Vec3 Evaluator::average_plane_normal(const Vec3 *p, int k, Vec3 fan) const {
   return normalized(sum);
 }
 
-Evaluation Evaluator::evaluate(uint32_t v, const Ring &ring, bool boundary_line) const {
+Evaluation Evaluator::evaluate(uint32_t v, const Ring& ring, bool boundary_line) const {
   Evaluation e;
   e.factor = std::numeric_limits<double>::infinity();
   const int k = ring.verts;

@@ -23,27 +23,27 @@ struct Evaluation {
 class Evaluator {
  public:
   // `plane` is the mesh's own normal (Planar2D only).
-  Evaluator(Mode mode, Vec3 plane, const float *positions)
+  Evaluator(Mode mode, Vec3 plane, const float* positions)
       : mode_(mode), plane_(plane), pos_(positions) {}
 
   Vec3 position(uint32_t v) const { return {pos_[3 * v], pos_[3 * v + 1], pos_[3 * v + 2]}; }
 
   // Factor of v with its ordered ring. `boundary_line` adds, for an open ring, the distance to
   // the line through its two boundary neighbours (the paper's two-neighbour factor).
-  Evaluation evaluate(uint32_t v, const Ring &ring, bool boundary_line) const;
+  Evaluation evaluate(uint32_t v, const Ring& ring, bool boundary_line) const;
 
  private:
-  Vec3 average_plane_normal(const Vec3 *p, int k, Vec3 fan) const;
+  Vec3 average_plane_normal(const Vec3* p, int k, Vec3 fan) const;
 
   Mode mode_;
   Vec3 plane_;
-  const float *pos_;
+  const float* pos_;
 };
 
 // Distance from p to the line through a and b (to a when a == b).
 double distance_to_line(Vec3 p, Vec3 a, Vec3 b);
 
 // Unit normal of the whole mesh (area weighted), the plane of Planar2D.
-Vec3 mesh_plane_normal(const float *positions, const std::vector<uint32_t> &triangles);
+Vec3 mesh_plane_normal(const float* positions, const std::vector<uint32_t>& triangles);
 
 } // namespace vrs

@@ -48,7 +48,7 @@ inline double orient2d(Vec2 a, Vec2 b, Vec2 c) {
 }
 
 // Orthonormal basis (u, v) of the plane with unit normal n, right-handed: u x v = n.
-inline void plane_basis(Vec3 n, Vec3 &u, Vec3 &v) {
+inline void plane_basis(Vec3 n, Vec3& u, Vec3& v) {
   Vec3 a = std::fabs(n.x) < 0.6 ? Vec3{1, 0, 0} : Vec3{0, 1, 0};
   u = normalized(cross(a, n));
   v = cross(n, u);

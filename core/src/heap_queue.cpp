@@ -2,7 +2,7 @@
 
 namespace vrs {
 
-void HeapQueue::init(size_t vertex_count, const IntervalMap &map) {
+void HeapQueue::init(size_t vertex_count, const IntervalMap& map) {
   map_ = map;
   heap_.clear();
   heap_.reserve(vertex_count);
@@ -10,7 +10,7 @@ void HeapQueue::init(size_t vertex_count, const IntervalMap &map) {
   seq_ = 0;
 }
 
-void HeapQueue::place(size_t i, const Entry &e) {
+void HeapQueue::place(size_t i, const Entry& e) {
   heap_[i] = e;
   pos_[e.v] = static_cast<uint32_t>(i);
 }

@@ -12,7 +12,7 @@ namespace vrs {
 
 class HeapQueue {
  public:
-  void init(size_t vertex_count, const IntervalMap &map);
+  void init(size_t vertex_count, const IntervalMap& map);
   void push(uint32_t v, double factor);
   void erase(uint32_t v);
   bool contains(uint32_t v) const { return pos_[v] != kNone; }
@@ -23,8 +23,8 @@ class HeapQueue {
     return !heap_.empty() && map_.interval_of(heap_[0].factor) == map_.n - 1;
   }
   uint32_t front() const { return heap_.empty() ? kNone : heap_[0].v; }
-  void respread(const float *) {} // already exact
-  const IntervalMap &map() const { return map_; }
+  void respread(const float*) {} // already exact
+  const IntervalMap& map() const { return map_; }
 
  private:
   struct Entry {
@@ -32,10 +32,10 @@ class HeapQueue {
     uint64_t seq;
     uint32_t v;
   };
-  static bool less(const Entry &a, const Entry &b) {
+  static bool less(const Entry& a, const Entry& b) {
     return a.factor < b.factor || (a.factor == b.factor && a.seq < b.seq);
   }
-  void place(size_t i, const Entry &e);
+  void place(size_t i, const Entry& e);
   void sift_up(size_t i);
   void sift_down(size_t i);
 

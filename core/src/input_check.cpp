@@ -7,8 +7,8 @@
 
 namespace vrs {
 
-std::string check_options(const Options &o, size_t vertex_count) {
-  const Target &t = o.target;
+std::string check_options(const Options& o, size_t vertex_count) {
+  const Target& t = o.target;
   if (static_cast<unsigned>(t.kind) > static_cast<unsigned>(TargetKind::Auto))
     return "unknown target kind";
   if (t.kind == TargetKind::Ratio && !(t.ratio >= 0.0 && t.ratio <= 1.0))
@@ -34,7 +34,7 @@ std::string check_options(const Options &o, size_t vertex_count) {
   return {};
 }
 
-std::string check_mesh(const Mesh &m) {
+std::string check_mesh(const Mesh& m) {
   if (m.positions.size() % 3 != 0) return "positions size is not a multiple of 3";
   if (m.triangles.size() % 3 != 0) return "triangles size is not a multiple of 3";
   const size_t n = m.vertex_count();

@@ -3,7 +3,7 @@
 
 namespace vrs {
 
-const char *reject_name(Reject r) {
+const char* reject_name(Reject r) {
   switch (r) {
   case RejectFold: return "fold";
   case RejectEdge: return "edge_exists";
@@ -14,7 +14,7 @@ const char *reject_name(Reject r) {
   }
 }
 
-const char *stop_reason_name(StopReason r) {
+const char* stop_reason_name(StopReason r) {
   switch (r) {
   case StopReason::TargetReached: return "target_reached";
   case StopReason::MaxFactor: return "max_factor";
@@ -33,7 +33,7 @@ size_t Report::rejected_total() const {
   return n;
 }
 
-bool parse_mode(const std::string &s, Mode &out) {
+bool parse_mode(const std::string& s, Mode& out) {
   if (s == "surface")
     out = Mode::Surface3D;
   else if (s == "terrain")
@@ -45,7 +45,7 @@ bool parse_mode(const std::string &s, Mode &out) {
   return true;
 }
 
-bool parse_queue(const std::string &s, QueueKind &out) {
+bool parse_queue(const std::string& s, QueueKind& out) {
   if (s == "intervals")
     out = QueueKind::Intervals;
   else if (s == "heap")
@@ -55,7 +55,7 @@ bool parse_queue(const std::string &s, QueueKind &out) {
   return true;
 }
 
-bool parse_mapping(const std::string &s, IntervalMapping &out) {
+bool parse_mapping(const std::string& s, IntervalMapping& out) {
   if (s == "linear")
     out = IntervalMapping::Linear;
   else if (s == "log")

@@ -6,7 +6,7 @@ namespace {
 
 // Is (a, b) an edge of the ring's polygon that already exists in the mesh? For an open ring the
 // closing edge (last, first) is new.
-bool is_ring_edge(const Ring &ring, int a, int b) {
+bool is_ring_edge(const Ring& ring, int a, int b) {
   int k = ring.verts;
   if ((a + 1) % k == b && (ring.closed() || a + 1 < k)) return true;
   if ((b + 1) % k == a && (ring.closed() || b + 1 < k)) return true;
@@ -15,7 +15,7 @@ bool is_ring_edge(const Ring &ring, int a, int b) {
 
 } // namespace
 
-bool star_direction(uint32_t v, const Ring &ring, const Evaluator &eval, Vec3 &out) {
+bool star_direction(uint32_t v, const Ring& ring, const Evaluator& eval, Vec3& out) {
   const int k = ring.verts;
   const Vec3 c = eval.position(v);
   std::array<Vec3, kMaxRing> n;
@@ -45,9 +45,9 @@ bool star_direction(uint32_t v, const Ring &ring, const Evaluator &eval, Vec3 &o
   return false;
 }
 
-Reject plan_removal(uint32_t v, const Ring &ring, Vec3 n, const Evaluator &eval,
-                    const Topology &topo, const uint32_t *tris, const float *surface_normals,
-                    const RemovalLimits &limits, Patch &out) {
+Reject plan_removal(uint32_t v, const Ring& ring, Vec3 n, const Evaluator& eval,
+                    const Topology& topo, const uint32_t* tris, const float* surface_normals,
+                    const RemovalLimits& limits, Patch& out) {
   const int k = ring.verts;
   if (k < 3) return RejectFold;
   Vec3 u, w;
@@ -82,7 +82,7 @@ Reject plan_removal(uint32_t v, const Ring &ring, Vec3 n, const Evaluator &eval,
 
   // Topology first (it cannot change with the projection), then shape.
   for (int t = 0; t < out.count; ++t) {
-    const auto &tri = out.tri[t];
+    const auto& tri = out.tri[t];
     if (topo.has_triangle(ring.v[tri[0]], ring.v[tri[1]], ring.v[tri[2]], tris))
       return RejectTriangle;
     for (int e = 0; e < 3; ++e) {
@@ -91,14 +91,14 @@ Reject plan_removal(uint32_t v, const Ring &ring, Vec3 n, const Evaluator &eval,
     }
   }
   for (int t = 0; t < out.count; ++t) {
-    const auto &tri = out.tri[t];
+    const auto& tri = out.tri[t];
     Vec3 a = q[tri[0]], b = q[tri[1]], d = q[tri[2]];
     if (triangle_quality(a, b, d) < limits.min_quality) return RejectDegenerate;
     Vec3 face = normalized(cross(b - a, d - a));
     if (dot(face, n) < limits.min_normal_cos) return RejectFlip;
     Vec3 original;
     for (int c = 0; c < 3; ++c) {
-      const float *sn = surface_normals + 3 * size_t(ring.v[tri[c]]);
+      const float* sn = surface_normals + 3 * size_t(ring.v[tri[c]]);
       original = original + Vec3{sn[0], sn[1], sn[2]};
     }
     if (!(dot(face, original) > 0)) return RejectFlip;

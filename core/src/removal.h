@@ -18,14 +18,14 @@ struct RemovalLimits {
 
 // A direction on which every triangle around v projects counter-clockwise, tried among the
 // fan's area-weighted normal, the mean of its unit normals and each triangle's own normal.
-bool star_direction(uint32_t v, const Ring &ring, const Evaluator &eval, Vec3 &out);
+bool star_direction(uint32_t v, const Ring& ring, const Evaluator& eval, Vec3& out);
 
 // Returns RejectCount when the removal is valid (the patch is in `out`), else the reason.
 // `surface_normals` holds the input's unit vertex normals (3 floats a vertex): a new triangle
 // must face the same side as the original surface at its corners, which the local plane alone
 // cannot promise after many removals have moved the ring.
-Reject plan_removal(uint32_t v, const Ring &ring, Vec3 normal, const Evaluator &eval,
-                    const Topology &topo, const uint32_t *tris, const float *surface_normals,
-                    const RemovalLimits &limits, Patch &out);
+Reject plan_removal(uint32_t v, const Ring& ring, Vec3 normal, const Evaluator& eval,
+                    const Topology& topo, const uint32_t* tris, const float* surface_normals,
+                    const RemovalLimits& limits, Patch& out);
 
 } // namespace vrs

@@ -19,7 +19,7 @@ constexpr uint8_t kFlagLocked = 1;  // never removed: user lock, or next to a Na
 constexpr uint8_t kFlagRemoved = 2; // gone from the mesh
 
 // Drops faces with a repeated corner: they have no area and no place in a manifold fan.
-size_t drop_repeated_corner_faces(std::vector<uint32_t> &tris) {
+size_t drop_repeated_corner_faces(std::vector<uint32_t>& tris) {
   size_t out = 0;
   for (size_t i = 0; i < tris.size(); i += 3) {
     uint32_t a = tris[i], b = tris[i + 1], c = tris[i + 2];
@@ -35,7 +35,7 @@ size_t drop_repeated_corner_faces(std::vector<uint32_t> &tris) {
 
 class Simplifier {
  public:
-  Simplifier(Mesh &mesh, const Options &opt, Report &rep)
+  Simplifier(Mesh& mesh, const Options& opt, Report& rep)
       : mesh_(mesh), opt_(opt), rep_(rep),
         eval_(opt.mode,
               opt.mode == Mode::Planar2D ? mesh_plane_normal(mesh.positions.data(), mesh.triangles)
@@ -45,7 +45,7 @@ class Simplifier {
   }
 
   void prepare();
-  template <class Queue> void run(Queue &queue);
+  template <class Queue> void run(Queue& queue);
   void compact();
 
  private:
@@ -53,14 +53,14 @@ class Simplifier {
     return k == VertexKind::Interior || (opt_.simplify_boundary && k == VertexKind::Boundary);
   }
   // Factor of v with its current ring, or +inf when v must stay.
-  double evaluate(uint32_t v, Ring &ring, Evaluation *e = nullptr);
+  double evaluate(uint32_t v, Ring& ring, Evaluation* e = nullptr);
   bool target_met() const;
   float progress_fraction(size_t queued, size_t queued0) const;
-  template <class Queue> void commit(uint32_t v, const Ring &ring, const Patch &patch, Queue &q);
+  template <class Queue> void commit(uint32_t v, const Ring& ring, const Patch& patch, Queue& q);
 
-  Mesh &mesh_;
-  const Options &opt_;
-  Report &rep_;
+  Mesh& mesh_;
+  const Options& opt_;
+  Report& rep_;
   Evaluator eval_;
   RemovalLimits limits_;
   Topology topo_;
@@ -79,7 +79,7 @@ void Simplifier::prepare() {
     for (size_t v = 0; v < n; ++v)
       if ((*opt_.locked)[v]) flags_[v] |= kFlagLocked;
   // A NaN/inf position poisons every plane it takes part in: lock it and its neighbours.
-  const auto &t = mesh_.triangles;
+  const auto& t = mesh_.triangles;
   for (size_t v = 0; v < n; ++v)
     if (!is_finite(eval_.position(static_cast<uint32_t>(v)))) ++rep_.nonfinite_vertices;
   if (rep_.nonfinite_vertices)
@@ -100,7 +100,7 @@ void Simplifier::prepare() {
     Vec3 area = cross(b - a, c - a) * scale;
     if (!is_finite(area)) continue;
     for (int k = 0; k < 3; ++k) {
-      float *sn = &normals_[3 * size_t(t[i + k])];
+      float* sn = &normals_[3 * size_t(t[i + k])];
       sn[0] += float(area.x), sn[1] += float(area.y), sn[2] += float(area.z);
     }
   }
@@ -138,7 +138,7 @@ void Simplifier::prepare() {
   target_vertices_ = tk == TargetKind::Vertices ? opt_.target.vertices : 0;
 }
 
-double Simplifier::evaluate(uint32_t v, Ring &ring, Evaluation *out) {
+double Simplifier::evaluate(uint32_t v, Ring& ring, Evaluation* out) {
   Evaluation e = eval_.evaluate(v, ring, opt_.simplify_boundary);
   if (out) *out = e;
   return e.factor;
@@ -171,8 +171,8 @@ float Simplifier::progress_fraction(size_t queued, size_t queued0) const {
 }
 
 template <class Queue>
-void Simplifier::commit(uint32_t v, const Ring &ring, const Patch &patch, Queue &queue) {
-  uint32_t *tris = mesh_.triangles.data();
+void Simplifier::commit(uint32_t v, const Ring& ring, const Patch& patch, Queue& queue) {
+  uint32_t* tris = mesh_.triangles.data();
   // Old faces leave their corners' lists; new faces take the first slots (the array never
   // grows: k or k-1 faces out, k-2 in), the rest are marked dead until compaction.
   for (int i = 0; i < ring.faces; ++i) {
@@ -211,7 +211,7 @@ void Simplifier::commit(uint32_t v, const Ring &ring, const Patch &patch, Queue 
   }
 }
 
-template <class Queue> void Simplifier::run(Queue &queue) {
+template <class Queue> void Simplifier::run(Queue& queue) {
   const size_t n = mesh_.vertex_count();
   IntervalMap map;
   map.n = opt_.intervals;
@@ -266,7 +266,7 @@ template <class Queue> void Simplifier::run(Queue &queue) {
     VertexKind kind = topo_.ring(v, mesh_.triangles.data(), opt_.max_valence, ring);
     Evaluation e;
     if (!removable(kind) || !std::isfinite(evaluate(v, ring, &e))) continue;
-    const uint32_t *tris = mesh_.triangles.data();
+    const uint32_t* tris = mesh_.triangles.data();
     Reject why =
         plan_removal(v, ring, e.normal, eval_, topo_, tris, normals_.data(), limits_, patch);
     // At tips, creases and thin parts the average plane of a strongly curved ring can fold it
@@ -286,7 +286,7 @@ template <class Queue> void Simplifier::run(Queue &queue) {
 }
 
 void Simplifier::compact() {
-  auto &tris = mesh_.triangles;
+  auto& tris = mesh_.triangles;
   size_t out = 0;
   for (size_t i = 0; i < tris.size(); i += 3) {
     if (tris[i] == kNone) continue;
@@ -296,7 +296,7 @@ void Simplifier::compact() {
   tris.resize(out);
 
   const size_t n = mesh_.vertex_count();
-  auto &pos = mesh_.positions;
+  auto& pos = mesh_.positions;
   rep_.remap.assign(n, kRemoved);
   uint32_t next = 0;
   for (size_t v = 0; v < n; ++v) {
@@ -306,15 +306,15 @@ void Simplifier::compact() {
     rep_.remap[v] = next++;
   }
   pos.resize(3 * size_t(next));
-  for (uint32_t &i : tris)
+  for (uint32_t& i : tris)
     i = rep_.remap[i];
   rep_.faces = tris.size() / 3;
   rep_.vertices = next;
 }
 
-std::string input_warnings(const Report &r) {
+std::string input_warnings(const Report& r) {
   std::string w;
-  auto add = [&](size_t count, const char *what) {
+  auto add = [&](size_t count, const char* what) {
     if (!count) return;
     if (!w.empty()) w += "; ";
     w += std::to_string(count) + " " + what;
@@ -329,7 +329,7 @@ std::string input_warnings(const Report &r) {
 
 } // namespace
 
-Report simplify(Mesh &mesh, const Options &options) {
+Report simplify(Mesh& mesh, const Options& options) {
   Report rep;
   rep.input_vertices = mesh.vertex_count();
   rep.input_faces = mesh.face_count();

@@ -4,7 +4,7 @@
 
 namespace vrs {
 
-void Topology::build(const std::vector<uint32_t> &triangles, size_t vertex_count) {
+void Topology::build(const std::vector<uint32_t>& triangles, size_t vertex_count) {
   first_.assign(vertex_count, 0);
   count_.assign(vertex_count, 0);
   capacity_.assign(vertex_count, 0);
@@ -42,7 +42,7 @@ void Topology::add_face(uint32_t v, uint32_t face) {
 }
 
 void Topology::remove_face(uint32_t v, uint32_t face) {
-  uint32_t *s = pool_.data() + first_[v];
+  uint32_t* s = pool_.data() + first_[v];
   uint32_t n = count_[v];
   for (uint32_t i = 0; i < n; ++i) {
     if (s[i] == face) {
@@ -54,7 +54,7 @@ void Topology::remove_face(uint32_t v, uint32_t face) {
   }
 }
 
-VertexKind Topology::ring(uint32_t v, const uint32_t *tris, int max_valence, Ring &out) const {
+VertexKind Topology::ring(uint32_t v, const uint32_t* tris, int max_valence, Ring& out) const {
   const uint32_t m = count_[v];
   out.verts = out.faces = 0;
   if (m == 0) return VertexKind::Isolated;
@@ -62,9 +62,9 @@ VertexKind Topology::ring(uint32_t v, const uint32_t *tris, int max_valence, Rin
 
   // Each face (v, a, b) contributes the directed ring edge a -> b.
   std::array<uint32_t, kMaxRing> from, to;
-  const uint32_t *s = faces_of(v);
+  const uint32_t* s = faces_of(v);
   for (uint32_t i = 0; i < m; ++i) {
-    const uint32_t *t = tris + 3 * s[i];
+    const uint32_t* t = tris + 3 * s[i];
     int c = t[0] == v ? 0 : t[1] == v ? 1 : 2;
     from[i] = t[(c + 1) % 3];
     to[i] = t[(c + 2) % 3];
@@ -105,20 +105,20 @@ VertexKind Topology::ring(uint32_t v, const uint32_t *tris, int max_valence, Rin
   return m == 1 ? VertexKind::Corner : VertexKind::Boundary;
 }
 
-bool Topology::has_edge(uint32_t a, uint32_t b, const uint32_t *tris) const {
+bool Topology::has_edge(uint32_t a, uint32_t b, const uint32_t* tris) const {
   if (count_[b] < count_[a]) std::swap(a, b);
-  const uint32_t *s = faces_of(a);
+  const uint32_t* s = faces_of(a);
   for (uint32_t i = 0; i < count_[a]; ++i) {
-    const uint32_t *t = tris + 3 * s[i];
+    const uint32_t* t = tris + 3 * s[i];
     if (t[0] == b || t[1] == b || t[2] == b) return true;
   }
   return false;
 }
 
-bool Topology::has_triangle(uint32_t a, uint32_t b, uint32_t c, const uint32_t *tris) const {
-  const uint32_t *s = faces_of(a);
+bool Topology::has_triangle(uint32_t a, uint32_t b, uint32_t c, const uint32_t* tris) const {
+  const uint32_t* s = faces_of(a);
   for (uint32_t i = 0; i < count_[a]; ++i) {
-    const uint32_t *t = tris + 3 * s[i];
+    const uint32_t* t = tris + 3 * s[i];
     bool hb = t[0] == b || t[1] == b || t[2] == b;
     bool hc = t[0] == c || t[1] == c || t[2] == c;
     if (hb && hc) return true;

@@ -35,10 +35,10 @@ struct Ring {
 class Topology {
  public:
   // `triangles` must hold valid indices with three distinct corners each; it is read, not kept.
-  void build(const std::vector<uint32_t> &triangles, size_t vertex_count);
+  void build(const std::vector<uint32_t>& triangles, size_t vertex_count);
 
   uint32_t valence(uint32_t v) const { return count_[v]; } // number of incident triangles
-  const uint32_t *faces_of(uint32_t v) const { return pool_.data() + first_[v]; }
+  const uint32_t* faces_of(uint32_t v) const { return pool_.data() + first_[v]; }
 
   void add_face(uint32_t v, uint32_t face);
   void remove_face(uint32_t v, uint32_t face);
@@ -46,10 +46,10 @@ class Topology {
 
   // Orders the fan of v; `tris` is the live triangle array. Rings longer than max_valence
   // (<= kMaxRing) are not built and the vertex is reported HighValence.
-  VertexKind ring(uint32_t v, const uint32_t *tris, int max_valence, Ring &out) const;
+  VertexKind ring(uint32_t v, const uint32_t* tris, int max_valence, Ring& out) const;
 
-  bool has_edge(uint32_t a, uint32_t b, const uint32_t *tris) const;
-  bool has_triangle(uint32_t a, uint32_t b, uint32_t c, const uint32_t *tris) const;
+  bool has_edge(uint32_t a, uint32_t b, const uint32_t* tris) const;
+  bool has_triangle(uint32_t a, uint32_t b, uint32_t c, const uint32_t* tris) const;
 
  private:
   void grow(uint32_t v);

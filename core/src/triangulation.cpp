@@ -2,7 +2,7 @@
 
 namespace vrs {
 
-bool is_convex(const Vec2 *p, int k) {
+bool is_convex(const Vec2* p, int k) {
   for (int i = 0; i < k; ++i)
     if (!(orient2d(p[i], p[(i + 1) % k], p[(i + 2) % k]) > 0)) return false;
   return true;
@@ -13,7 +13,7 @@ double triangle_score(Vec3 a, Vec3 b, Vec3 c, Vec3 n) {
   return facing > 0 ? triangle_quality(a, b, c) * facing : 0.0;
 }
 
-void triangulate_fan(const Vec2 *, const Vec3 *q, Vec3 n, int k, Patch &out) {
+void triangulate_fan(const Vec2*, const Vec3* q, Vec3 n, int k, Patch& out) {
   int best = 0;
   double best_worst = -1;
   for (int a = 0; a < k; ++a) {
@@ -39,7 +39,7 @@ bool in_triangle(Vec2 a, Vec2 b, Vec2 c, Vec2 x) {
 
 } // namespace
 
-bool triangulate_ears(const Vec2 *p, const Vec3 *q, Vec3 normal, int k, Patch &out) {
+bool triangulate_ears(const Vec2* p, const Vec3* q, Vec3 normal, int k, Patch& out) {
   std::array<uint8_t, kMaxRing + 1> poly;
   int n = k;
   for (int i = 0; i < k; ++i)

@@ -15,7 +15,7 @@ struct Patch {
   std::array<std::array<uint8_t, 3>, kMaxRing> tri; // indices into the ring, counter-clockwise
 };
 
-bool is_convex(const Vec2 *p, int k);
+bool is_convex(const Vec2* p, int k);
 
 // Score of a new triangle (a, b, c) in 3D: its shape quality times how squarely it faces the
 // projection normal n. Shape alone would happily pick a well-shaped triangle standing across
@@ -23,10 +23,10 @@ bool is_convex(const Vec2 *p, int k);
 double triangle_score(Vec3 a, Vec3 b, Vec3 c, Vec3 n);
 
 // Fan from the apex whose worst triangle scores best (3D positions `q`, projection normal n).
-void triangulate_fan(const Vec2 *p, const Vec3 *q, Vec3 n, int k, Patch &out);
+void triangulate_fan(const Vec2* p, const Vec3* q, Vec3 n, int k, Patch& out);
 
 // Ear clipping that always cuts the best-scoring valid ear, so slivers and steep triangles are
 // made only when nothing else fits. False if the polygon has no valid ear (not simple).
-bool triangulate_ears(const Vec2 *p, const Vec3 *q, Vec3 n, int k, Patch &out);
+bool triangulate_ears(const Vec2* p, const Vec3* q, Vec3 n, int k, Patch& out);
 
 } // namespace vrs

@@ -31,6 +31,18 @@ done
 "$bin" "$out/f10.stl" "$out/f10-again.ply" --ratio 0.5 --json >"$out/stl.json" &&
   [ "$(json_num "$out/stl.json" output_faces)" -le 646 ] && ok || fail "stl input did not simplify"
 
+# ASCII STL too (written here from the OFF, one facet per face).
+awk 'NF == 0 { next } ++n == 1 { next } n == 2 { nv = $1; print "solid fandisk"; next }
+     n <= 2 + nv { x[n - 3] = $1 " " $2 " " $3; next }
+     { print " facet normal 0 0 0\n  outer loop";
+       for (i = 2; i <= 4; i++) print "   vertex " x[$i];
+       print "  endloop\n endfacet" }
+     END { print "endsolid fandisk" }' "$in" >"$out/ascii.stl"
+"$bin" "$out/ascii.stl" "$out/ascii-stl.ply" --ratio 0.1 --json >"$out/astl.json" &&
+  [ "$(json_num "$out/astl.json" input_vertices)" = 6475 ] &&
+  [ "$(json_num "$out/astl.json" output_faces)" -le 1295 ] && ok ||
+  fail "ascii STL: $(cat "$out/astl.json")"
+
 # 3. ASCII and binary PLY input give the same result.
 "$bin" "$in" "$out/a.ply" --ratio 1 --ascii >/dev/null && "$bin" "$in" "$out/b.ply" --ratio 1 >/dev/null
 "$bin" "$out/a.ply" "$out/a1.off" --ratio 0.2 >/dev/null && "$bin" "$out/b.ply" "$out/b1.off" --ratio 0.2 >/dev/null &&

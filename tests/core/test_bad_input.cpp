@@ -17,14 +17,14 @@ Options ratio(double r) {
   return o;
 }
 
-void expect_valid(const Mesh &in, const Mesh &out, const Report &r) {
+void expect_valid(const Mesh& in, const Mesh& out, const Report& r) {
   ASSERT_TRUE(r.ok) << r.message;
   EXPECT_EQ(vrs_test::check_indices(out), "");
   EXPECT_EQ(vrs_test::check_subset(in, out, r), "");
   EXPECT_LE(vrs_test::edge_stats(out).nonmanifold, vrs_test::edge_stats(in).nonmanifold);
 }
 
-void expect_refused(Mesh m, const Options &o, const std::string &words) {
+void expect_refused(Mesh m, const Options& o, const std::string& words) {
   const Mesh before = m;
   Report r = simplify(m, o);
   EXPECT_FALSE(r.ok);
@@ -111,7 +111,7 @@ TEST(BadInput, NonFiniteCoordinatesAreKeptWithTheirNeighbours) {
 
 TEST(BadInput, HugeCoordinatesDoNotOverflow) {
   Mesh in = vrs_test::icosphere(3);
-  for (float &p : in.positions)
+  for (float& p : in.positions)
     p *= 3e37f;
   Mesh m = in;
   Report r = simplify(m, ratio(0.1));

@@ -18,7 +18,7 @@ IntervalMap linear(int n, double f_max) {
   return m;
 }
 
-template <class Q> std::vector<uint32_t> drain(Q &q) {
+template <class Q> std::vector<uint32_t> drain(Q& q) {
   std::vector<uint32_t> out;
   while (!q.empty()) {
     uint32_t v = q.front();
@@ -119,17 +119,17 @@ TEST(HeapQueue, IsExactAndBreaksTiesByInsertionOrder) {
   for (uint32_t v = 0; v < 1000; v += 7) { // re-push: goes behind its equals
     double f = double(rng() % 50) / 50.0;
     q.push(v, f);
-    auto it = std::find_if(ref.begin(), ref.end(), [&](auto &e) { return e.second == v; });
+    auto it = std::find_if(ref.begin(), ref.end(), [&](auto& e) { return e.second == v; });
     ref.erase(it);
     ref.push_back({f, v});
   }
   for (uint32_t v = 3; v < 1000; v += 11) {
     q.erase(v);
-    ref.erase(std::find_if(ref.begin(), ref.end(), [&](auto &e) { return e.second == v; }));
+    ref.erase(std::find_if(ref.begin(), ref.end(), [&](auto& e) { return e.second == v; }));
   }
-  std::stable_sort(ref.begin(), ref.end(), [](auto &a, auto &b) { return a.first < b.first; });
+  std::stable_sort(ref.begin(), ref.end(), [](auto& a, auto& b) { return a.first < b.first; });
   std::vector<uint32_t> expect;
-  for (auto &e : ref)
+  for (auto& e : ref)
     expect.push_back(e.second);
   EXPECT_EQ(drain(q), expect);
 }

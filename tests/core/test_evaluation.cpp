@@ -9,7 +9,7 @@ using namespace vrs;
 
 namespace {
 
-Evaluation evaluate(const Mesh &m, uint32_t v, Mode mode = Mode::Surface3D, bool line = false) {
+Evaluation evaluate(const Mesh& m, uint32_t v, Mode mode = Mode::Surface3D, bool line = false) {
   Topology t;
   t.build(m.triangles, m.vertex_count());
   Ring r;

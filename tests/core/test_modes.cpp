@@ -12,12 +12,12 @@ namespace {
 
 // Signed area of every face projected along unit direction n: all must be positive (no fold)
 // and they must add up to the domain's area (no overlap).
-void expect_projection_tiles(const Mesh &m, const double n[3], double domain_area) {
+void expect_projection_tiles(const Mesh& m, const double n[3], double domain_area) {
   double sum = 0;
   for (size_t i = 0; i < m.triangles.size(); i += 3) {
-    const float *a = &m.positions[3 * m.triangles[i]];
-    const float *b = &m.positions[3 * m.triangles[i + 1]];
-    const float *c = &m.positions[3 * m.triangles[i + 2]];
+    const float* a = &m.positions[3 * m.triangles[i]];
+    const float* b = &m.positions[3 * m.triangles[i + 1]];
+    const float* c = &m.positions[3 * m.triangles[i + 2]];
     double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
     double v[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
     double x[3] = {u[1] * v[2] - u[2] * v[1], u[2] * v[0] - u[0] * v[2], u[0] * v[1] - u[1] * v[0]};

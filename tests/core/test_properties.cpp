@@ -10,7 +10,7 @@
 
 using namespace vrs;
 
-class RealMesh : public ::testing::TestWithParam<std::tuple<const char *, double>> {};
+class RealMesh : public ::testing::TestWithParam<std::tuple<const char*, double>> {};
 
 TEST_P(RealMesh, KeepsTheInvariants) {
   const auto [name, ratio] = GetParam();
@@ -58,7 +58,7 @@ INSTANTIATE_TEST_SUITE_P(CgalData, RealMesh,
                                                               "fandisk.off", "elephant.off",
                                                               "mushroom.off", "three_peaks.off"),
                                             ::testing::Values(0.5, 0.1, 0.01)),
-                         [](const auto &info) {
+                         [](const auto& info) {
                            std::string n = std::get<0>(info.param);
                            n = n.substr(0, n.find('.'));
                            return n + "_" + std::to_string(int(std::get<1>(info.param) * 100)) +

@@ -17,12 +17,12 @@ Options faces(size_t n) {
   return o;
 }
 
-double xy_area2(const Mesh &m) {
+double xy_area2(const Mesh& m) {
   double a = 0;
   for (size_t i = 0; i < m.triangles.size(); i += 3) {
-    const float *p = &m.positions[3 * m.triangles[i]];
-    const float *q = &m.positions[3 * m.triangles[i + 1]];
-    const float *r = &m.positions[3 * m.triangles[i + 2]];
+    const float* p = &m.positions[3 * m.triangles[i]];
+    const float* q = &m.positions[3 * m.triangles[i + 1]];
+    const float* r = &m.positions[3 * m.triangles[i + 2]];
     double t = (q[0] - p[0]) * (r[1] - p[1]) - (q[1] - p[1]) * (r[0] - p[0]);
     EXPECT_GT(t, 0) << "face " << i / 3 << " is not counter-clockwise in xy";
     a += t;
@@ -30,7 +30,7 @@ double xy_area2(const Mesh &m) {
   return a;
 }
 
-void expect_valid(const Mesh &in, const Mesh &out, const Report &r) {
+void expect_valid(const Mesh& in, const Mesh& out, const Report& r) {
   EXPECT_TRUE(r.ok) << r.message;
   EXPECT_EQ(vrs_test::check_indices(out), "");
   EXPECT_EQ(vrs_test::check_subset(in, out, r), "");

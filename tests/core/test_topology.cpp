@@ -7,7 +7,7 @@ using namespace vrs;
 
 namespace {
 
-VertexKind kind_of(const Mesh &m, uint32_t v, Ring &r, int cap = 32) {
+VertexKind kind_of(const Mesh& m, uint32_t v, Ring& r, int cap = 32) {
   Topology t;
   t.build(m.triangles, m.vertex_count());
   return t.ring(v, m.triangles.data(), cap, r);
@@ -80,7 +80,7 @@ TEST(Topology, AddAndRemoveFacesGrowTheSliceAndKeepOrder) {
   ASSERT_EQ(t.valence(0), 43u);
   t.remove_face(0, 120);
   ASSERT_EQ(t.valence(0), 42u);
-  const uint32_t *s = t.faces_of(0);
+  const uint32_t* s = t.faces_of(0);
   for (uint32_t i = 3; i + 1 < 42; ++i)
     EXPECT_LT(s[i], s[i + 1]);
   EXPECT_EQ(t.valence(1), 3u); // neighbours' slices untouched by the move

@@ -11,7 +11,7 @@ namespace {
 
 const Vec3 kUp{0, 0, 1};
 
-double polygon_area2(const std::vector<Vec2> &p) {
+double polygon_area2(const std::vector<Vec2>& p) {
   double a = 0;
   for (size_t i = 0; i < p.size(); ++i)
     a += orient2d({0, 0}, p[i], p[(i + 1) % p.size()]);
@@ -20,7 +20,7 @@ double polygon_area2(const std::vector<Vec2> &p) {
 
 // Every triangle counter-clockwise and their areas add up to the polygon's: a triangulation
 // of the polygon with no overlap and no gap.
-void expect_tiles(const std::vector<Vec2> &p, const Patch &t) {
+void expect_tiles(const std::vector<Vec2>& p, const Patch& t) {
   ASSERT_EQ(t.count, int(p.size()) - 2);
   double sum = 0;
   for (int i = 0; i < t.count; ++i) {
@@ -31,7 +31,7 @@ void expect_tiles(const std::vector<Vec2> &p, const Patch &t) {
   EXPECT_NEAR(sum, polygon_area2(p), 1e-9 * std::fabs(polygon_area2(p)));
 }
 
-std::vector<Vec3> lift(const std::vector<Vec2> &p) {
+std::vector<Vec3> lift(const std::vector<Vec2>& p) {
   std::vector<Vec3> q;
   for (auto v : p)
     q.push_back({v.x, v.y, 0});

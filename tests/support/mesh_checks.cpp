@@ -15,7 +15,7 @@ uint64_t key(uint32_t a, uint32_t b) {
   return (uint64_t(a) << 32) | b;
 }
 
-std::unordered_map<uint64_t, int> edge_counts(const vrs::Mesh &m) {
+std::unordered_map<uint64_t, int> edge_counts(const vrs::Mesh& m) {
   std::unordered_map<uint64_t, int> c;
   for (size_t i = 0; i < m.triangles.size(); i += 3)
     for (int e = 0; e < 3; ++e)
@@ -26,7 +26,7 @@ std::unordered_map<uint64_t, int> edge_counts(const vrs::Mesh &m) {
 struct V3 {
   double x, y, z;
 };
-V3 pos(const vrs::Mesh &m, uint32_t v) {
+V3 pos(const vrs::Mesh& m, uint32_t v) {
   return {m.positions[3 * v], m.positions[3 * v + 1], m.positions[3 * v + 2]};
 }
 V3 sub(V3 a, V3 b) {
@@ -45,9 +45,9 @@ long EdgeStats::euler() const {
   return long(referenced_vertices) - long(edges) + long(faces);
 }
 
-EdgeStats edge_stats(const vrs::Mesh &m) {
+EdgeStats edge_stats(const vrs::Mesh& m) {
   EdgeStats s;
-  for (auto &[k, n] : edge_counts(m)) {
+  for (auto& [k, n] : edge_counts(m)) {
     ++s.edges;
     s.boundary += n == 1;
     s.nonmanifold += n > 2;
@@ -60,7 +60,7 @@ EdgeStats edge_stats(const vrs::Mesh &m) {
   return s;
 }
 
-std::string check_subset(const vrs::Mesh &in, const vrs::Mesh &out, const vrs::Report &r) {
+std::string check_subset(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Report& r) {
   if (r.remap.size() != in.vertex_count()) return "remap has the wrong size";
   uint32_t expect = 0;
   for (size_t v = 0; v < r.remap.size(); ++v) {
@@ -73,7 +73,7 @@ std::string check_subset(const vrs::Mesh &in, const vrs::Mesh &out, const vrs::R
   return {};
 }
 
-std::string check_indices(const vrs::Mesh &m) {
+std::string check_indices(const vrs::Mesh& m) {
   for (size_t i = 0; i < m.triangles.size(); i += 3) {
     uint32_t a = m.triangles[i], b = m.triangles[i + 1], c = m.triangles[i + 2];
     if (a >= m.vertex_count() || b >= m.vertex_count() || c >= m.vertex_count())
@@ -83,9 +83,9 @@ std::string check_indices(const vrs::Mesh &m) {
   return {};
 }
 
-std::string check_boundary_kept(const vrs::Mesh &in, const vrs::Mesh &out, const vrs::Report &r) {
+std::string check_boundary_kept(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Report& r) {
   auto before = edge_counts(in), after = edge_counts(out);
-  for (auto &[k, n] : before) {
+  for (auto& [k, n] : before) {
     if (n != 1) continue;
     uint32_t a = r.remap[k >> 32], b = r.remap[k & 0xffffffffu];
     if (a == vrs::kRemoved || b == vrs::kRemoved) return "a boundary vertex was removed";
@@ -95,7 +95,7 @@ std::string check_boundary_kept(const vrs::Mesh &in, const vrs::Mesh &out, const
   return {};
 }
 
-size_t count_degenerate(const vrs::Mesh &m, double q) {
+size_t count_degenerate(const vrs::Mesh& m, double q) {
   size_t n = 0;
   for (size_t i = 0; i < m.triangles.size(); i += 3) {
     V3 a = pos(m, m.triangles[i]), b = pos(m, m.triangles[i + 1]), c = pos(m, m.triangles[i + 2]);
@@ -107,13 +107,13 @@ size_t count_degenerate(const vrs::Mesh &m, double q) {
   return n;
 }
 
-size_t count_flipped(const vrs::Mesh &in, const vrs::Mesh &out, const vrs::Report &r) {
+size_t count_flipped(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Report& r) {
   std::vector<V3> normal(in.vertex_count(), V3{0, 0, 0});
   for (size_t i = 0; i < in.triangles.size(); i += 3) {
     V3 x = cross(sub(pos(in, in.triangles[i + 1]), pos(in, in.triangles[i])),
                  sub(pos(in, in.triangles[i + 2]), pos(in, in.triangles[i])));
     for (int c = 0; c < 3; ++c) {
-      V3 &n = normal[in.triangles[i + c]];
+      V3& n = normal[in.triangles[i + c]];
       n = {n.x + x.x, n.y + x.y, n.z + x.z};
     }
   }
@@ -135,7 +135,7 @@ size_t count_flipped(const vrs::Mesh &in, const vrs::Mesh &out, const vrs::Repor
   return flipped;
 }
 
-size_t count_duplicate_directed_edges(const vrs::Mesh &m) {
+size_t count_duplicate_directed_edges(const vrs::Mesh& m) {
   std::unordered_map<uint64_t, int> c;
   size_t dup = 0;
   for (size_t i = 0; i < m.triangles.size(); i += 3)

@@ -13,19 +13,19 @@ struct EdgeStats {
   long euler() const; // V - E + F over referenced vertices
   size_t faces = 0;
 };
-EdgeStats edge_stats(const vrs::Mesh &m);
+EdgeStats edge_stats(const vrs::Mesh& m);
 
 // Every output vertex is the input vertex the remap names, bit for bit, in input order.
-std::string check_subset(const vrs::Mesh &in, const vrs::Mesh &out, const vrs::Report &r);
+std::string check_subset(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Report& r);
 // No index out of range, no repeated corner.
-std::string check_indices(const vrs::Mesh &m);
+std::string check_indices(const vrs::Mesh& m);
 // Every boundary edge of the input (through the remap) is still a boundary edge of the output.
-std::string check_boundary_kept(const vrs::Mesh &in, const vrs::Mesh &out, const vrs::Report &r);
+std::string check_boundary_kept(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Report& r);
 // Triangles of quality < q (1 = equilateral).
-size_t count_degenerate(const vrs::Mesh &m, double q = 1e-3);
+size_t count_degenerate(const vrs::Mesh& m, double q = 1e-3);
 // Output triangles whose normal opposes the input's area-weighted vertex normals at its corners.
-size_t count_flipped(const vrs::Mesh &in, const vrs::Mesh &out, const vrs::Report &r);
+size_t count_flipped(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Report& r);
 // Each directed edge used at most once (consistent orientation).
-size_t count_duplicate_directed_edges(const vrs::Mesh &m);
+size_t count_duplicate_directed_edges(const vrs::Mesh& m);
 
 } // namespace vrs_test

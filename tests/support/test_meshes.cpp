@@ -15,7 +15,7 @@ namespace vrs_test {
 
 namespace {
 
-bool next_line(std::istream &in, std::string &line) {
+bool next_line(std::istream& in, std::string& line) {
   while (std::getline(in, line)) {
     size_t hash = line.find('#');
     if (hash != std::string::npos) line.resize(hash);
@@ -26,7 +26,7 @@ bool next_line(std::istream &in, std::string &line) {
 
 } // namespace
 
-vrs::Mesh read_off(const std::string &path) {
+vrs::Mesh read_off(const std::string& path) {
   vrs::Mesh m;
   std::ifstream in(path);
   std::string line;
@@ -51,7 +51,7 @@ vrs::Mesh read_off(const std::string &path) {
     size_t n;
     s >> n;
     std::vector<uint32_t> poly(n);
-    for (auto &p : poly)
+    for (auto& p : poly)
       s >> p;
     if (!s) return {};
     for (size_t j = 1; j + 1 < n; ++j)
@@ -60,7 +60,7 @@ vrs::Mesh read_off(const std::string &path) {
   return m;
 }
 
-std::string cgal_mesh(const std::string &name) {
+std::string cgal_mesh(const std::string& name) {
   std::string path = std::string(VRS_CGAL_DATA) + "/" + name;
   std::ifstream f(path);
   return f ? path : std::string();
@@ -135,7 +135,7 @@ vrs::Mesh icosphere(int level) {
                  4, 11, 10, 2, 10, 7, 6, 7, 1, 8, 3,  9,  4, 3,  4,  2, 3, 2, 6, 3,
                  6, 8,  3,  8, 9,  4, 9, 5, 2, 4, 11, 6,  2, 10, 8,  6, 7, 9, 8, 1};
   auto normalize = [&](uint32_t v) {
-    float *p = &m.positions[3 * v];
+    float* p = &m.positions[3 * v];
     float l = std::sqrt(p[0] * p[0] + p[1] * p[1] + p[2] * p[2]);
     for (int c = 0; c < 3; ++c)
       p[c] /= l;

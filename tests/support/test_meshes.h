@@ -8,9 +8,9 @@
 namespace vrs_test {
 
 // Reads an OFF file (OFF/COFF/NOFF, comments, polygons fan-triangulated). Empty on failure.
-vrs::Mesh read_off(const std::string &path);
+vrs::Mesh read_off(const std::string& path);
 // Path of a mesh of CGAL's data set (VRS_CGAL_DATA), or "" when the data set is missing.
-std::string cgal_mesh(const std::string &name);
+std::string cgal_mesh(const std::string& name);
 
 // Flat regular hexagon around one centre vertex (index 6), in the z = 0 plane.
 vrs::Mesh hexagon_fan(float centre_height = 0.0f);

@@ -84,7 +84,7 @@ struct Options {
   int max_valence = 32;
   // Optional per-vertex lock (nonzero = never removed), size vertex_count(): selections, tile
   // borders. Not owned.
-  const std::vector<uint8_t> *locked = nullptr;
+  const std::vector<uint8_t>* locked = nullptr;
   ProgressFn progress;
 };
 
@@ -97,7 +97,7 @@ enum Reject : uint8_t {
   RejectDegenerate, // a new triangle would be a sliver or have no area
   RejectCount
 };
-const char *reject_name(Reject r);
+const char* reject_name(Reject r);
 
 enum class StopReason : uint8_t {
   TargetReached, // the face / vertex / ratio target is met
@@ -107,7 +107,7 @@ enum class StopReason : uint8_t {
   Cancelled,     // the progress callback returned false
   InvalidInput,  // nothing was done, see Report::message
 };
-const char *stop_reason_name(StopReason r);
+const char* stop_reason_name(StopReason r);
 
 struct Report {
   bool ok = false;     // false: invalid input or options, the mesh is unchanged
@@ -136,11 +136,11 @@ constexpr uint32_t kRemoved = 0xffffffffu;
 // Simplifies `mesh` in place: removed vertices are compacted away (kept vertices keep their
 // relative order) and triangles rewritten. On invalid input (report.ok == false) the mesh is
 // left exactly as given. Deterministic: the same input and options give the same output.
-Report simplify(Mesh &mesh, const Options &options);
+Report simplify(Mesh& mesh, const Options& options);
 
 // Short parsers used by the adapters (CLI, plugin): false on an unknown name.
-bool parse_mode(const std::string &s, Mode &out);
-bool parse_queue(const std::string &s, QueueKind &out);
-bool parse_mapping(const std::string &s, IntervalMapping &out);
+bool parse_mode(const std::string& s, Mode& out);
+bool parse_queue(const std::string& s, QueueKind& out);
+bool parse_mapping(const std::string& s, IntervalMapping& out);
 
 } // namespace vrs

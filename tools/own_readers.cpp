@@ -1,0 +1,114 @@
+// File readers of our own, for two formats whose vcglib 2020.09 importer is broken:
+// - OBJ: every triangle that uses the file's first vertex is dropped (the importer checks the
+//   1-based index after making it 0-based);
+// - binary STL: the 80-byte header is read as a C string without a terminator (a stack
+//   overflow that AddressSanitizer reports on any header without a NUL).
+#include <cstdint>
+#include <cstring>
+#include <fstream>
+#include <sstream>
+#include <vector>
+
+#include "vcg_mesh.h"
+#include <wrap/io_trimesh/io_mask.h>
+
+namespace vrs_tool {
+
+namespace {
+
+void fill(VcgDocument& doc, const std::vector<vcg::Point3f>& pos,
+          const std::vector<vcg::Color4b>& color, const std::vector<int>& tris) {
+  VcgMesh& m = doc.mesh;
+  auto vi = vcg::tri::Allocator<VcgMesh>::AddVertices(m, pos.size());
+  const bool colored = !color.empty() && color.size() == pos.size();
+  for (size_t i = 0; i < pos.size(); ++i, ++vi) {
+    vi->P() = pos[i];
+    if (colored) vi->C() = color[i];
+  }
+  auto fi = vcg::tri::Allocator<VcgMesh>::AddFaces(m, tris.size() / 3);
+  for (size_t t = 0; t < tris.size(); t += 3, ++fi)
+    for (int c = 0; c < 3; ++c)
+      fi->V(c) = &m.vert[tris[t + c]];
+  doc.mask = vcg::tri::io::Mask::IOM_VERTCOORD | vcg::tri::io::Mask::IOM_FACEINDEX |
+             (colored ? vcg::tri::io::Mask::IOM_VERTCOLOR : 0);
+}
+
+} // namespace
+
+// Positions and faces (polygons fanned, negative indices relative) with the common
+// "v x y z r g b" colour extension.
+std::string read_obj(const std::string& path, VcgDocument& doc) {
+  std::ifstream in(path);
+  if (!in) return "cannot open file";
+  VcgMesh& m = doc.mesh;
+  std::vector<vcg::Point3f> pos;
+  std::vector<vcg::Color4b> color;
+  std::vector<int> tris;
+  std::string line;
+  size_t line_no = 0;
+  while (std::getline(in, line)) {
+    ++line_no;
+    std::istringstream s(line);
+    std::string tag;
+    s >> tag;
+    if (tag == "v") {
+      float x, y, z, r, g, b;
+      if (!(s >> x >> y >> z)) return "bad vertex on line " + std::to_string(line_no);
+      pos.emplace_back(x, y, z);
+      if (s >> r >> g >> b) color.emplace_back(vcg::Color4b(r * 255, g * 255, b * 255, 255));
+    } else if (tag == "f") {
+      std::vector<int> poly;
+      std::string corner;
+      while (s >> corner) {
+        long i = std::strtol(corner.c_str(), nullptr, 10); // "i", "i/t", "i/t/n", "i//n"
+        long idx = i > 0 ? i - 1 : long(pos.size()) + i;
+        if (i == 0 || idx < 0 || idx >= long(pos.size()))
+          return "face on line " + std::to_string(line_no) + " names a missing vertex";
+        poly.push_back(int(idx));
+      }
+      for (size_t j = 1; j + 1 < poly.size(); ++j)
+        tris.insert(tris.end(), {poly[0], poly[j], poly[j + 1]});
+    }
+  }
+  fill(doc, pos, color, tris);
+  return {};
+}
+
+// Binary or ascii STL as a triangle soup (three new vertices per face, merged by the caller).
+std::string read_stl(const std::string& path, VcgDocument& doc) {
+  std::ifstream in(path, std::ios::binary);
+  if (!in) return "cannot open file";
+  std::string data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+  std::vector<vcg::Point3f> pos;
+  std::vector<int> tris;
+  uint32_t count = 0;
+  if (data.size() >= 84) std::memcpy(&count, data.data() + 80, 4);
+  if (data.size() >= 84 && data.size() == 84 + 50 * size_t(count)) {
+    for (size_t t = 0; t < count; ++t) {
+      const char* rec = data.data() + 84 + 50 * t + 12; // skip the normal
+      for (int c = 0; c < 3; ++c) {
+        float p[3];
+        std::memcpy(p, rec + 12 * c, 12);
+        tris.push_back(int(pos.size()));
+        pos.emplace_back(p[0], p[1], p[2]);
+      }
+    }
+  } else if (data.compare(0, 5, "solid") == 0) {
+    std::istringstream s(data);
+    std::string word;
+    while (s >> word) {
+      if (word != "vertex") continue;
+      float x, y, z;
+      if (!(s >> x >> y >> z)) return "bad vertex in ascii STL";
+      tris.push_back(int(pos.size()));
+      pos.emplace_back(x, y, z);
+    }
+    if (tris.size() % 3) return "ascii STL with an incomplete facet";
+  } else {
+    return "neither binary (size does not match the face count) nor ascii STL";
+  }
+  fill(doc, pos, {}, tris);
+  return {};
+}
+
+} // namespace vrs_tool
