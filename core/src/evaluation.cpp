@@ -11,6 +11,30 @@ double distance_to_line(Vec3 p, Vec3 a, Vec3 b) {
   return length(cross(p - a, d)) / std::sqrt(l2);
 }
 
+std::vector<float> vertex_normals(const std::vector<float>& pos,
+                                  const std::vector<uint32_t>& tris) {
+  // Area weights scaled by the largest coordinate: float sums of (3e38)^2 would overflow.
+  double extent = 0;
+  for (float x : pos)
+    if (std::isfinite(x)) extent = std::max(extent, std::fabs(double(x)));
+  const double scale = extent > 0 ? 1.0 / (extent * extent) : 1.0;
+  auto at = [&](uint32_t v) { return Vec3{pos[3 * v], pos[3 * v + 1], pos[3 * v + 2]}; };
+  std::vector<float> n(pos.size(), 0.0f);
+  for (size_t i = 0; i + 2 < tris.size(); i += 3) {
+    Vec3 a = at(tris[i]), area = cross(at(tris[i + 1]) - a, at(tris[i + 2]) - a) * scale;
+    if (!is_finite(area)) continue;
+    for (int k = 0; k < 3; ++k) {
+      float* s = &n[3 * size_t(tris[i + k])];
+      s[0] += float(area.x), s[1] += float(area.y), s[2] += float(area.z);
+    }
+  }
+  for (size_t v = 0; v < n.size(); v += 3) {
+    Vec3 u = normalized(Vec3{n[v], n[v + 1], n[v + 2]});
+    n[v] = float(u.x), n[v + 1] = float(u.y), n[v + 2] = float(u.z);
+  }
+  return n;
+}
+
 Vec3 mesh_plane_normal(const float* pos, const std::vector<uint32_t>& tris) {
   Vec3 sum;
   for (size_t i = 0; i + 2 < tris.size(); i += 3) {

@@ -43,6 +43,10 @@ class Evaluator {
 // Distance from p to the line through a and b (to a when a == b).
 double distance_to_line(Vec3 p, Vec3 a, Vec3 b);
 
+// Unit area-weighted vertex normals of the input surface, 3 floats a vertex (zero where none).
+std::vector<float> vertex_normals(const std::vector<float>& positions,
+                                  const std::vector<uint32_t>& triangles);
+
 // Unit normal of the whole mesh (area weighted), the plane of Planar2D.
 Vec3 mesh_plane_normal(const float* positions, const std::vector<uint32_t>& triangles);
 

@@ -53,7 +53,7 @@ class Simplifier {
     return k == VertexKind::Interior || (opt_.simplify_boundary && k == VertexKind::Boundary);
   }
   // Factor of v with its current ring, or +inf when v must stay.
-  double evaluate(uint32_t v, Ring& ring, Evaluation* e = nullptr);
+  double evaluate(uint32_t v, const Ring& ring, Evaluation* e = nullptr);
   bool target_met() const;
   float progress_fraction(size_t queued, size_t queued0) const;
   template <class Queue> void commit(uint32_t v, const Ring& ring, const Patch& patch, Queue& q);
@@ -89,26 +89,7 @@ void Simplifier::prepare() {
         flags_[t[i]] = flags_[t[i + 1]] = flags_[t[i + 2]] = kFlagLocked;
 
   topo_.build(t, n);
-  // Area weights scaled by the largest coordinate: float sums of (3e38)^2 would overflow.
-  double extent = 0;
-  for (float x : mesh_.positions)
-    if (std::isfinite(x)) extent = std::max(extent, std::fabs(double(x)));
-  const double scale = extent > 0 ? 1.0 / (extent * extent) : 1.0;
-  normals_.assign(3 * n, 0.0f);
-  for (size_t i = 0; i < t.size(); i += 3) {
-    Vec3 a = eval_.position(t[i]), b = eval_.position(t[i + 1]), c = eval_.position(t[i + 2]);
-    Vec3 area = cross(b - a, c - a) * scale;
-    if (!is_finite(area)) continue;
-    for (int k = 0; k < 3; ++k) {
-      float* sn = &normals_[3 * size_t(t[i + k])];
-      sn[0] += float(area.x), sn[1] += float(area.y), sn[2] += float(area.z);
-    }
-  }
-  for (size_t v = 0; v < n; ++v) {
-    Vec3 u = normalized(Vec3{normals_[3 * v], normals_[3 * v + 1], normals_[3 * v + 2]});
-    normals_[3 * v] = float(u.x), normals_[3 * v + 1] = float(u.y),
-                 normals_[3 * v + 2] = float(u.z);
-  }
+  normals_ = vertex_normals(mesh_.positions, t);
   factor_.assign(n, std::numeric_limits<float>::infinity());
   faces_ = faces0_ = t.size() / 3;
   Ring ring;
@@ -138,7 +119,7 @@ void Simplifier::prepare() {
   target_vertices_ = tk == TargetKind::Vertices ? opt_.target.vertices : 0;
 }
 
-double Simplifier::evaluate(uint32_t v, Ring& ring, Evaluation* out) {
+double Simplifier::evaluate(uint32_t v, const Ring& ring, Evaluation* out) {
   Evaluation e = eval_.evaluate(v, ring, opt_.simplify_boundary);
   if (out) *out = e;
   return e.factor;

@@ -113,3 +113,15 @@ TEST(Evaluation, NonFinitePositionGivesNoFactor) {
   m.positions[0] = NAN;
   EXPECT_TRUE(std::isinf(evaluate(m, 6).factor));
 }
+
+TEST(Evaluation, VertexNormalsOfASpherePointOutwardEvenAtHugeScale) {
+  for (float scale : {1.0f, 3e37f}) {
+    Mesh m = vrs_test::icosphere(2);
+    for (float& p : m.positions) p *= scale;
+    std::vector<float> n = vertex_normals(m.positions, m.triangles);
+    for (size_t v = 0; v < m.vertex_count(); ++v) {
+      Vec3 p{m.positions[3 * v], m.positions[3 * v + 1], m.positions[3 * v + 2]};
+      EXPECT_GT(dot(normalized(p), Vec3{n[3 * v], n[3 * v + 1], n[3 * v + 2]}), 0.99) << v;
+    }
+  }
+}
