@@ -15,6 +15,6 @@ run() { # name, mesh, extra options
 }
 run fandisk fandisk.off
 run elephant elephant.off
-run three_peaks-terrain three_peaks.off --mode terrain
+run three_peaks three_peaks.off
 echo
 echo "Outputs are in $top/out/ (binary PLY; open them in MeshLab)."
