@@ -55,7 +55,7 @@ Vec3 Evaluator::average_plane_normal(const Vec3* p, int k, Vec3 fan) const {
     Vec3 n = normalized(cross(p[j] - p[i], p[l] - p[i]));
     sum = dot(n, fan) < 0 ? sum - n : sum + n;
   };
-  if (k <= kAllTriplesValence) {
+  if (k <= all_triples_) {
     for (int i = 0; i < k; ++i)
       for (int j = i + 1; j < k; ++j)
         for (int l = j + 1; l < k; ++l)

@@ -23,8 +23,11 @@ struct Evaluation {
 class Evaluator {
  public:
   // `plane` is the mesh's own normal (Planar2D only).
-  Evaluator(Mode mode, Vec3 plane, const float* positions)
-      : mode_(mode), plane_(plane), pos_(positions) {}
+  // `all_triples_valence`: up to which valence every triple is used (the benchmark and a
+  // test vary it to measure what the subset changes).
+  Evaluator(Mode mode, Vec3 plane, const float* positions,
+            int all_triples_valence = kAllTriplesValence)
+      : mode_(mode), plane_(plane), pos_(positions), all_triples_(all_triples_valence) {}
 
   Vec3 position(uint32_t v) const { return {pos_[3 * v], pos_[3 * v + 1], pos_[3 * v + 2]}; }
 
@@ -38,6 +41,7 @@ class Evaluator {
   Mode mode_;
   Vec3 plane_;
   const float* pos_;
+  int all_triples_;
 };
 
 // Distance from p to the line through a and b (to a when a == b).
