@@ -3,6 +3,7 @@
 
 #include <cmath>
 #include <limits>
+#include <random>
 
 #include "mesh_checks.h"
 #include "test_meshes.h"
@@ -201,4 +202,37 @@ TEST(BadInput, IsolatedVerticesAreLeftInPlace) {
   EXPECT_EQ(r.unreferenced_vertices, 2u);
   EXPECT_NE(r.remap[in.vertex_count() - 1], kRemoved);
   EXPECT_NE(r.remap[in.vertex_count() - 2], kRemoved);
+}
+
+TEST(BadInput, RandomTriangleSoupsGiveValidResults) {
+  // Arbitrary soups: repeated, flipped, non-manifold and degenerate faces, a few non-finite
+  // coordinates, every target kind and mode. Each result must be a valid subset mesh.
+  std::mt19937 rng(2026);
+  for (int trial = 0; trial < 300; ++trial) {
+    Mesh in;
+    const uint32_t nv = 4 + rng() % 60;
+    for (uint32_t v = 0; v < 3 * nv; ++v)
+      in.positions.push_back(float(rng() % 17) - 8.0f);
+    if (trial % 7 == 0) in.positions[rng() % in.positions.size()] = NAN;
+    const uint32_t nf = rng() % 150;
+    for (uint32_t f = 0; f < 3 * nf; ++f)
+      in.triangles.push_back(rng() % nv);
+    Options o;
+    o.target.kind = static_cast<TargetKind>(trial % 5);
+    o.target.faces = rng() % 100;
+    o.target.vertices = rng() % 40;
+    o.target.ratio = double(rng() % 101) / 100;
+    o.target.max_factor = double(rng() % 5);
+    o.mode = static_cast<Mode>(trial % 3);
+    o.queue = trial % 2 ? QueueKind::Heap : QueueKind::Intervals;
+    o.simplify_boundary = trial % 4 == 0;
+    o.intervals = 2 + int(rng() % 50);
+    Mesh m = in;
+    Report r = simplify(m, o);
+    ASSERT_TRUE(r.ok) << "trial " << trial << ": " << r.message;
+    ASSERT_EQ(vrs_test::check_indices(m), "") << "trial " << trial;
+    ASSERT_EQ(vrs_test::check_subset(in, m, r), "") << "trial " << trial;
+    EXPECT_LE(vrs_test::edge_stats(m).nonmanifold, vrs_test::edge_stats(in).nonmanifold)
+        << "trial " << trial;
+  }
 }
