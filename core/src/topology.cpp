@@ -69,35 +69,35 @@ VertexKind Topology::ring(uint32_t v, const uint32_t* tris, int max_valence, Rin
     from[i] = t[(c + 1) % 3];
     to[i] = t[(c + 2) % 3];
   }
-  // A neighbour twice on the same side means an edge with > 2 faces or flipped orientation.
-  int start = -1, starts = 0;
+  // One pass over the pairs: a neighbour twice on the same side means an edge with > 2 faces
+  // or flipped orientation; `next[j]` is the face that continues face j around v.
+  std::array<uint32_t, kMaxRing> next;
+  std::array<bool, kMaxRing> has_pred{};
+  for (uint32_t i = 0; i < m; ++i)
+    next[i] = kNone;
   for (uint32_t i = 0; i < m; ++i) {
-    bool has_pred = false;
-    for (uint32_t j = 0; j < m; ++j) {
-      if (j != i && (from[j] == from[i] || to[j] == to[i])) return VertexKind::NonManifold;
-      has_pred = has_pred || to[j] == from[i];
-    }
-    if (!has_pred) {
-      start = static_cast<int>(i);
-      ++starts;
+    for (uint32_t j = i + 1; j < m; ++j) {
+      if (from[j] == from[i] || to[j] == to[i]) return VertexKind::NonManifold;
+      if (to[i] == from[j]) next[i] = j, has_pred[j] = true;
+      if (to[j] == from[i]) next[j] = i, has_pred[i] = true;
     }
   }
+  int start = -1, starts = 0;
+  for (uint32_t i = 0; i < m; ++i)
+    if (!has_pred[i]) start = static_cast<int>(i), ++starts;
   if (starts > 1) return VertexKind::NonManifold; // several fans meet at v
   const bool closed = starts == 0;
   uint32_t cur = closed ? 0 : static_cast<uint32_t>(start);
   for (uint32_t step = 0; step < m; ++step) {
     out.v[step] = from[cur];
     out.f[step] = s[cur];
-    uint32_t next = kNone;
-    for (uint32_t j = 0; j < m; ++j)
-      if (from[j] == to[cur]) next = j;
     if (step + 1 == m) {
-      if (closed ? next != 0 : next != kNone) return VertexKind::NonManifold;
+      if (closed ? next[cur] != 0 : next[cur] != kNone) return VertexKind::NonManifold;
       if (!closed) out.v[m] = to[cur];
-    } else if (next == kNone || (closed && next == 0)) {
+    } else if (next[cur] == kNone || (closed && next[cur] == 0)) {
       return VertexKind::NonManifold; // the walk ended early: two fans share v
     }
-    cur = next;
+    cur = next[cur];
   }
   out.faces = static_cast<int>(m);
   out.verts = static_cast<int>(closed ? m : m + 1);
