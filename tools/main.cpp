@@ -91,7 +91,7 @@ int main(int argc, char** argv) {
   int targets = 0;
   for (int i = 1; i < argc; ++i) {
     std::string a = argv[i];
-    auto value = [&](const char*) -> const char* {
+    auto value = [&]() -> const char* {
       if (i + 1 >= argc) return nullptr;
       return argv[++i];
     };
@@ -109,37 +109,37 @@ int main(int argc, char** argv) {
       opt.target.kind = vrs::TargetKind::Auto;
       ++targets;
     } else if (a == "--ratio") {
-      if (!(v = value("--ratio")) || !parse_double(v, opt.target.ratio))
+      if (!(v = value()) || !parse_double(v, opt.target.ratio))
         return usage_error("--ratio needs a number in [0, 1]");
       opt.target.kind = vrs::TargetKind::Ratio;
       ++targets;
     } else if (a == "--faces") {
-      if (!(v = value("--faces")) || !parse_count(v, opt.target.faces))
+      if (!(v = value()) || !parse_count(v, opt.target.faces))
         return usage_error("--faces needs a count");
       opt.target.kind = vrs::TargetKind::Faces;
       ++targets;
     } else if (a == "--vertices") {
-      if (!(v = value("--vertices")) || !parse_count(v, opt.target.vertices))
+      if (!(v = value()) || !parse_count(v, opt.target.vertices))
         return usage_error("--vertices needs a count");
       opt.target.kind = vrs::TargetKind::Vertices;
       ++targets;
     } else if (a == "--max-factor") {
-      if (!(v = value("--max-factor")) || !parse_double(v, opt.target.max_factor))
+      if (!(v = value()) || !parse_double(v, opt.target.max_factor))
         return usage_error("--max-factor needs a number >= 0");
       opt.target.kind = vrs::TargetKind::MaxFactor;
       ++targets;
     } else if (a == "--mode") {
-      if (!(v = value("--mode")) || !vrs::parse_mode(v, opt.mode))
+      if (!(v = value()) || !vrs::parse_mode(v, opt.mode))
         return usage_error("--mode must be surface, terrain or planar");
     } else if (a == "--queue") {
-      if (!(v = value("--queue")) || !vrs::parse_queue(v, opt.queue))
+      if (!(v = value()) || !vrs::parse_queue(v, opt.queue))
         return usage_error("--queue must be intervals or heap");
     } else if (a == "--mapping") {
-      if (!(v = value("--mapping")) || !vrs::parse_mapping(v, opt.mapping))
+      if (!(v = value()) || !vrs::parse_mapping(v, opt.mapping))
         return usage_error("--mapping must be linear or log");
     } else if (a == "--intervals") {
       size_t n = 0;
-      if (!(v = value("--intervals")) || !parse_count(v, n) || n > (1u << 20))
+      if (!(v = value()) || !parse_count(v, n) || n > (1u << 20))
         return usage_error("--intervals needs a count");
       opt.intervals = static_cast<int>(n);
     } else if (!a.empty() && a[0] == '-') {
