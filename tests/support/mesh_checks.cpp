@@ -60,6 +60,17 @@ EdgeStats edge_stats(const vrs::Mesh& m) {
   return s;
 }
 
+std::string check_valid(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Report& r) {
+  if (!r.ok) return "refused: " + r.message;
+  std::string e = check_indices(out);
+  if (e.empty()) e = check_subset(in, out, r);
+  if (e.empty() && edge_stats(out).nonmanifold > edge_stats(in).nonmanifold)
+    e = "new non-manifold edges";
+  if (e.empty() && count_duplicate_directed_edges(out) > count_duplicate_directed_edges(in))
+    e = "new repeated directed edges (orientation broken)";
+  return e;
+}
+
 std::string check_subset(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Report& r) {
   if (r.remap.size() != in.vertex_count()) return "remap has the wrong size";
   uint32_t expect = 0;

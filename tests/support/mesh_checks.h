@@ -15,6 +15,10 @@ struct EdgeStats {
 };
 EdgeStats edge_stats(const vrs::Mesh& m);
 
+// All a simplification must always keep: report ok, indices valid, vertices a subset, no more
+// non-manifold edges and no more repeated directed edges than the input had. "" when so.
+std::string check_valid(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Report& r);
+
 // Every output vertex is the input vertex the remap names, bit for bit, in input order.
 std::string check_subset(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Report& r);
 // No index out of range, no repeated corner.
