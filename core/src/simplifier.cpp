@@ -19,11 +19,15 @@ constexpr uint8_t kFlagLocked = 1;  // never removed: user lock, or next to a Na
 constexpr uint8_t kFlagRemoved = 2; // gone from the mesh
 
 // Drops faces with a repeated corner: they have no area and no place in a manifold fan.
-size_t drop_repeated_corner_faces(std::vector<uint32_t>& tris) {
+// `source[f]` becomes the input index of kept face f.
+size_t drop_repeated_corner_faces(std::vector<uint32_t>& tris, std::vector<uint32_t>& source) {
   size_t out = 0;
+  source.clear();
+  source.reserve(tris.size() / 3);
   for (size_t i = 0; i < tris.size(); i += 3) {
     uint32_t a = tris[i], b = tris[i + 1], c = tris[i + 2];
     if (a == b || b == c || c == a) continue;
+    source.push_back(static_cast<uint32_t>(i / 3));
     tris[out++] = a;
     tris[out++] = b;
     tris[out++] = c;
@@ -67,13 +71,14 @@ class Simplifier {
   std::vector<float> factor_;
   std::vector<float> normals_; // unit vertex normals of the input surface, 3 a vertex
   std::vector<uint8_t> flags_;
+  std::vector<uint32_t> face_source_; // per face slot: its input face, or kRemoved once rewritten
   size_t faces_ = 0, vertices_ = 0, target_faces_ = 0, target_vertices_ = 0;
   size_t faces0_ = 0;
 };
 
 void Simplifier::prepare() {
   const size_t n = mesh_.vertex_count();
-  rep_.dropped_degenerate_faces = drop_repeated_corner_faces(mesh_.triangles);
+  rep_.dropped_degenerate_faces = drop_repeated_corner_faces(mesh_.triangles, face_source_);
   flags_.assign(n, 0);
   if (opt_.locked)
     for (size_t v = 0; v < n; ++v)
@@ -163,6 +168,7 @@ void Simplifier::commit(uint32_t v, const Ring& ring, const Patch& patch, Queue&
   }
   for (int i = 0; i < ring.faces; ++i) {
     uint32_t f = ring.f[i];
+    face_source_[f] = kRemoved;
     for (int c = 0; c < 3; ++c) {
       tris[3 * f + c] = i < patch.count ? ring.v[patch.tri[i][c]] : kNone;
       if (i < patch.count) topo_.add_face(tris[3 * f + c], f);
@@ -269,8 +275,10 @@ template <class Queue> void Simplifier::run(Queue& queue) {
 void Simplifier::compact() {
   auto& tris = mesh_.triangles;
   size_t out = 0;
+  rep_.face_source.clear();
   for (size_t i = 0; i < tris.size(); i += 3) {
     if (tris[i] == kNone) continue;
+    rep_.face_source.push_back(face_source_[i / 3]);
     for (int c = 0; c < 3; ++c)
       tris[out++] = tris[i + c];
   }

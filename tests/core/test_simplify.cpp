@@ -228,3 +228,20 @@ TEST(Simplify, HeapAndLogarithmicMappingReachTheTarget) {
     EXPECT_EQ(vrs_test::edge_stats(m).euler(), 2);
   }
 }
+
+TEST(Simplify, FaceSourceNamesTheUntouchedInputFaces) {
+  Mesh in = vrs_test::grid(6, 0.2f);
+  in.triangles.insert(in.triangles.begin(), {0, 0, 1}); // dropped: shifts the indices by one
+  Mesh m = in;
+  Options o;
+  o.target.kind = TargetKind::Faces;
+  o.target.faces = 60;
+  Report r = simplify(m, o);
+  ASSERT_EQ(vrs_test::check_valid(in, m, r), ""); // checks each named source face
+  size_t kept = 0, made = 0;
+  for (uint32_t s : r.face_source)
+    (s == kRemoved ? made : kept)++;
+  EXPECT_GT(kept, 0u);
+  EXPECT_GT(made, 0u);
+  EXPECT_EQ(std::count(r.face_source.begin(), r.face_source.end(), 0u), 0); // the dropped face
+}

@@ -81,6 +81,15 @@ std::string check_subset(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::R
       return "vertex " + std::to_string(v) + " moved";
   }
   if (expect != out.vertex_count()) return "output has vertices the remap does not name";
+  if (r.face_source.size() != out.face_count()) return "face_source has the wrong size";
+  for (size_t f = 0; f < r.face_source.size(); ++f) {
+    uint32_t s = r.face_source[f];
+    if (s == vrs::kRemoved) continue;
+    if (s >= in.face_count()) return "face_source out of range";
+    for (int c = 0; c < 3; ++c)
+      if (r.remap[in.triangles[3 * s + c]] != out.triangles[3 * f + c])
+        return "face " + std::to_string(f) + " is not the input face its source names";
+  }
   return {};
 }
 

@@ -19,7 +19,8 @@ EdgeStats edge_stats(const vrs::Mesh& m);
 // non-manifold edges and no more repeated directed edges than the input had. "" when so.
 std::string check_valid(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Report& r);
 
-// Every output vertex is the input vertex the remap names, bit for bit, in input order.
+// Every output vertex is the input vertex the remap names, bit for bit, in input order, and
+// every output face with a source is that input face.
 std::string check_subset(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Report& r);
 // No index out of range, no repeated corner.
 std::string check_indices(const vrs::Mesh& m);

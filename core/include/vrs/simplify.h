@@ -129,6 +129,9 @@ struct Report {
 
   double max_removed_factor = 0.0; // largest evaluation factor of a removed vertex
   std::vector<uint32_t> remap;     // old vertex index -> new index, or kRemoved
+  // For each output face, the input face it is (same corners, same order), or kRemoved for a
+  // face the re-triangulation made: lets an adapter keep per-face data of untouched faces.
+  std::vector<uint32_t> face_source;
 };
 
 constexpr uint32_t kRemoved = 0xffffffffu;
