@@ -1,0 +1,70 @@
+#include "cmesh_bridge.h"
+
+namespace vrs_plugin {
+
+CoreCopy to_core(CMeshO& m) {
+  CoreCopy c;
+  std::vector<uint32_t> index(m.vert.size(), vrs::kRemoved);
+  c.mesh.positions.reserve(3 * size_t(m.vn));
+  c.vertex.reserve(size_t(m.vn));
+  for (size_t i = 0; i < m.vert.size(); ++i) {
+    CVertexO& v = m.vert[i];
+    if (v.IsD()) continue;
+    index[i] = static_cast<uint32_t>(c.vertex.size());
+    c.vertex.push_back(&v);
+    for (int k = 0; k < 3; ++k)
+      c.mesh.positions.push_back(float(v.P()[k]));
+  }
+  c.mesh.triangles.reserve(3 * size_t(m.fn));
+  c.face.reserve(size_t(m.fn));
+  for (CFaceO& f : m.face) {
+    if (f.IsD()) continue;
+    c.face.push_back(&f);
+    for (int k = 0; k < 3; ++k)
+      c.mesh.triangles.push_back(index[vcg::tri::Index(m, f.V(k))]);
+  }
+  return c;
+}
+
+std::vector<uint8_t> lock_outside_selection(const CoreCopy& c) {
+  std::vector<uint8_t> lock(c.vertex.size(), 0);
+  for (size_t f = 0; f < c.face.size(); ++f)
+    if (!c.face[f]->IsS())
+      for (int k = 0; k < 3; ++k)
+        lock[c.mesh.triangles[3 * f + k]] = 1;
+  return lock;
+}
+
+void apply(CMeshO& m, const CoreCopy& c, const vrs::Mesh& out, const vrs::Report& r,
+           bool select_new_faces) {
+  std::vector<CVertexO*> kept(out.vertex_count(), nullptr);
+  for (size_t v = 0; v < r.remap.size(); ++v) {
+    if (r.remap[v] == vrs::kRemoved)
+      vcg::tri::Allocator<CMeshO>::DeleteVertex(m, *c.vertex[v]);
+    else
+      kept[r.remap[v]] = c.vertex[v];
+  }
+  std::vector<char> survives(c.face.size(), 0);
+  size_t fresh = 0;
+  for (uint32_t s : r.face_source) {
+    if (s == vrs::kRemoved)
+      ++fresh;
+    else
+      survives[s] = 1;
+  }
+  for (size_t f = 0; f < c.face.size(); ++f)
+    if (!survives[f]) vcg::tri::Allocator<CMeshO>::DeleteFace(m, *c.face[f]);
+  // Kept vertices stay where they are, so the pointers above remain valid while faces are
+  // added (only the face vector may move).
+  auto fi = vcg::tri::Allocator<CMeshO>::AddFaces(m, fresh);
+  for (size_t t = 0; t < r.face_source.size(); ++t) {
+    if (r.face_source[t] != vrs::kRemoved) continue;
+    for (int k = 0; k < 3; ++k)
+      fi->V(k) = kept[out.triangles[3 * t + k]];
+    if (select_new_faces) fi->SetS();
+    ++fi;
+  }
+  vcg::tri::Allocator<CMeshO>::CompactEveryVector(m);
+}
+
+} // namespace vrs_plugin

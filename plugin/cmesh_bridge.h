@@ -1,0 +1,32 @@
+// CMeshO (MeshLab's vcglib mesh) <-> the core mesh. Nothing here decides anything about the
+// simplification; it only copies, and writes a finished result back in one step.
+#pragma once
+
+#include <common/ml_mesh_type.h>
+
+#include <string>
+#include <vector>
+
+#include "vrs/simplify.h"
+
+namespace vrs_plugin {
+
+// The live (not deleted) part of a CMeshO as a core mesh.
+struct CoreCopy {
+  vrs::Mesh mesh;
+  std::vector<CVertexO*> vertex; // core vertex index -> CMeshO vertex
+  std::vector<CFaceO*> face;     // core face index -> CMeshO face
+};
+CoreCopy to_core(CMeshO& m);
+
+// Per-vertex lock for "Selected": a vertex may go only if every face around it is selected
+// (as Quadric Edge Collapse Decimation does).
+std::vector<uint8_t> lock_outside_selection(const CoreCopy& copy);
+
+// Writes the simplified mesh back: removed vertices are deleted, faces the core left untouched
+// keep every attribute, new faces are added (selected when `select_new_faces`), then the mesh
+// is compacted. Call only with a successful report.
+void apply(CMeshO& m, const CoreCopy& copy, const vrs::Mesh& simplified, const vrs::Report& r,
+           bool select_new_faces);
+
+} // namespace vrs_plugin
