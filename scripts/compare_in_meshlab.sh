@@ -15,7 +15,7 @@ work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 # shellcheck source=mlx.sh
 source "$top/scripts/mlx.sh"
-ml=$("$top/scripts/meshlab_private.sh")
+ml=$("$top/scripts/meshlab_private.sh" "$work/meshlab")
 server() { # args...: runs the private meshlabserver, log to $work/log
   (cd "$work" && LD_LIBRARY_PATH=/usr/lib/x86_64-linux-gnu/meshlab \
     xvfb-run -a "$ml/meshlabserver" "$@" >"$work/log" 2>&1) || {
@@ -75,10 +75,11 @@ per_run() { awk -v a="${best[$1]}" -v b="${best[none]}" -v k=$K 'BEGIN { d = (a 
 
 echo
 echo "$name: $faces faces -> target $target (ratio $ratio), in meshlabserver (MeshLab 2020.09)"
-printf '| %-44s | %7s | %10s | %20s | %21s |\n' method faces "time (s)" "Hausdorff max (%diag)" "Hausdorff mean (%diag)"
-printf '|%s|%s|%s|%s|%s|\n' "$(printf -- '-%.0s' {1..46})" "---------" "------------" "----------------------" "-----------------------"
-printf '| %-44s | %7s | %10s | %20s | %21s |\n' "Vertex Removal Decimation (this plugin)" "$(ply_faces "$out/$name-ours.ply")" "$(per_run ours)" "$ours_max" "$ours_mean"
-printf '| %-44s | %7s | %10s | %20s | %21s |\n' "Quadric Edge Collapse Decimation (MeshLab)" "$(ply_faces "$out/$name-qecd.ply")" "$(per_run qecd)" "$qecd_max" "$qecd_mean"
+row() { printf '| %-42s | %5s | %8s | %21s | %22s |\n' "$@"; }
+row method faces "time (s)" "Hausdorff max (%diag)" "Hausdorff mean (%diag)"
+row "$(printf -- '-%.0s' {1..42})" ----- -------- "$(printf -- '-%.0s' {1..21})" "$(printf -- '-%.0s' {1..22})"
+row "Vertex Removal Decimation (this plugin)" "$(ply_faces "$out/$name-ours.ply")" "$(per_run ours)" "$ours_max" "$ours_mean"
+row "Quadric Edge Collapse Decimation (MeshLab)" "$(ply_faces "$out/$name-qecd.ply")" "$(per_run qecd)" "$qecd_max" "$qecd_mean"
 echo
 echo "Outputs: $out/$name-ours.ply, $out/$name-qecd.ply (MeshLab's log: $out/$name-hausdorff.log)"
 echo "Hausdorff: symmetric (max of both directions, mean of both means), MeshLab's 'Hausdorff Distance' filter."

@@ -1,5 +1,6 @@
 #!/usr/bin/env bash
-# Installs what a fresh Debian bookworm machine lacks to build and test vrsimplify, then fetches
+# Installs what a fresh Debian bookworm machine lacks to build and test vrsimplify (MeshLab
+# 2020.09 included), then fetches
 # the sources the build reads but the repository never holds (vcglib and MeshLab's headers, from
 # Debian's `meshlab` source package) and the real test meshes (Debian's `libcgal-demo`).
 # Idempotent: a second run only checks.
@@ -10,7 +11,10 @@ sudo_=""
 [ "$(id -u)" -eq 0 ] || sudo_="sudo"
 
 want=(build-essential cmake pkg-config git xz-utils libgtest-dev libgmock-dev libbenchmark-dev
-      clang-format libeigen3-dev)
+      clang-format libeigen3-dev
+      # MeshLab itself, what its plugin headers need, and a display for it
+      meshlab qtbase5-dev libqt5opengl5-dev libqt5xmlpatterns5-dev libglew-dev
+      xvfb xauth xdotool imagemagick)
 want+=("$@")
 missing=()
 for p in "${want[@]}"; do

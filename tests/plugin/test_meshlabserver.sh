@@ -8,7 +8,7 @@ top=$(realpath "$1") data=$(realpath "$2") out=$(realpath -m "$3")
 rm -rf "$out" && mkdir -p "$out"
 # shellcheck source=../../scripts/mlx.sh
 source "$top/scripts/mlx.sh"
-ml=$("$top/scripts/meshlab_private.sh") || exit 1
+ml=$("$top/scripts/meshlab_private.sh" "$out/meshlab") || exit 1
 passed=0 failed=0
 ok() { passed=$((passed + 1)); }
 fail() { failed=$((failed + 1)); echo "FAIL: $*"; }
@@ -127,6 +127,21 @@ if server "$out/both.log" -i "$fandisk" -i "$fandisk" -o "$out/both-ours.ply" -l
 else
   fail "ours + QECD script failed: $(tail -3 "$out/both.log")"
 fi
+
+# The example scripts shipped in plugin/scripts/ all run and simplify (the LOD one into new
+# layers, so the saved current layer is the untouched input).
+for example in "$top"/plugin/scripts/*.mlx; do
+  name=example-$(basename "${example%.mlx}")
+  rm -f "$out/$name.ply"
+  if server "$out/$name.log" -i "$fandisk" -o "$out/$name.ply" -m sa -s "$example" && [ -s "$out/$name.ply" ] &&
+    grep -q "Vertex Removal Decimation.*12946 -> [0-9]* faces" "$out/$name.log"; then
+    f=$(ply_count "$out/$name.ply" face) want=12945
+    case $name in *lod*) want=12946 ;; esac
+    [ "$f" -le "$want" ] && ok || fail "$name: output has $f faces"
+  else
+    fail "$name: $(tail -3 "$out/$name.log")"
+  fi
+done
 
 # Failing scripts: exit 255, our message in the log, nothing saved, MeshLab still alive.
 expect_failure() { # NAME MESH WORDS OVERRIDES...
