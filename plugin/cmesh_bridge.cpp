@@ -1,5 +1,7 @@
 #include "cmesh_bridge.h"
 
+#include <vcg/complex/algorithms/update/topology.h>
+
 namespace vrs_plugin {
 
 CoreCopy to_core(CMeshO& m) {
@@ -17,19 +19,20 @@ CoreCopy to_core(CMeshO& m) {
   }
   c.mesh.triangles.reserve(3 * size_t(m.fn));
   c.face.reserve(size_t(m.fn));
-  for (CFaceO& f : m.face) {
+  for (size_t i = 0; i < m.face.size(); ++i) {
+    CFaceO& f = m.face[i];
     if (f.IsD()) continue;
-    c.face.push_back(&f);
+    c.face.push_back(i);
     for (int k = 0; k < 3; ++k)
       c.mesh.triangles.push_back(index[vcg::tri::Index(m, f.V(k))]);
   }
   return c;
 }
 
-std::vector<uint8_t> lock_outside_selection(const CoreCopy& c) {
+std::vector<uint8_t> lock_outside_selection(const CMeshO& m, const CoreCopy& c) {
   std::vector<uint8_t> lock(c.vertex.size(), 0);
   for (size_t f = 0; f < c.face.size(); ++f)
-    if (!c.face[f]->IsS())
+    if (!m.face[c.face[f]].IsS())
       for (int k = 0; k < 3; ++k)
         lock[c.mesh.triangles[3 * f + k]] = 1;
   return lock;
@@ -37,13 +40,8 @@ std::vector<uint8_t> lock_outside_selection(const CoreCopy& c) {
 
 void apply(CMeshO& m, const CoreCopy& c, const vrs::Mesh& out, const vrs::Report& r,
            bool select_new_faces) {
+  // Every allocation first: if one fails, the mesh has not been touched yet.
   std::vector<CVertexO*> kept(out.vertex_count(), nullptr);
-  for (size_t v = 0; v < r.remap.size(); ++v) {
-    if (r.remap[v] == vrs::kRemoved)
-      vcg::tri::Allocator<CMeshO>::DeleteVertex(m, *c.vertex[v]);
-    else
-      kept[r.remap[v]] = c.vertex[v];
-  }
   std::vector<char> survives(c.face.size(), 0);
   size_t fresh = 0;
   for (uint32_t s : r.face_source) {
@@ -52,10 +50,10 @@ void apply(CMeshO& m, const CoreCopy& c, const vrs::Mesh& out, const vrs::Report
     else
       survives[s] = 1;
   }
-  for (size_t f = 0; f < c.face.size(); ++f)
-    if (!survives[f]) vcg::tri::Allocator<CMeshO>::DeleteFace(m, *c.face[f]);
-  // Kept vertices stay where they are, so the pointers above remain valid while faces are
-  // added (only the face vector may move).
+  for (size_t v = 0; v < r.remap.size(); ++v)
+    if (r.remap[v] != vrs::kRemoved) kept[r.remap[v]] = c.vertex[v];
+  // New faces before any deletion: AddFaces may move the face vector (it mends the adjacency
+  // pointers itself) and is the last step that can fail. Vertices do not move.
   auto fi = vcg::tri::Allocator<CMeshO>::AddFaces(m, fresh);
   for (size_t t = 0; t < r.face_source.size(); ++t) {
     if (r.face_source[t] != vrs::kRemoved) continue;
@@ -64,7 +62,14 @@ void apply(CMeshO& m, const CoreCopy& c, const vrs::Mesh& out, const vrs::Report
     if (select_new_faces) fi->SetS();
     ++fi;
   }
+  for (size_t f = 0; f < c.face.size(); ++f)
+    if (!survives[f]) vcg::tri::Allocator<CMeshO>::DeleteFace(m, m.face[c.face[f]]);
+  for (size_t v = 0; v < r.remap.size(); ++v)
+    if (r.remap[v] == vrs::kRemoved) vcg::tri::Allocator<CMeshO>::DeleteVertex(m, *c.vertex[v]);
   vcg::tri::Allocator<CMeshO>::CompactEveryVector(m);
+  // Adjacency the mesh carries (other filters may have enabled it) must describe the new faces.
+  if (vcg::tri::HasFFAdjacency(m)) vcg::tri::UpdateTopology<CMeshO>::FaceFace(m);
+  if (vcg::tri::HasVFAdjacency(m)) vcg::tri::UpdateTopology<CMeshO>::VertexFace(m);
 }
 
 } // namespace vrs_plugin

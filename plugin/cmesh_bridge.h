@@ -15,13 +15,13 @@ namespace vrs_plugin {
 struct CoreCopy {
   vrs::Mesh mesh;
   std::vector<CVertexO*> vertex; // core vertex index -> CMeshO vertex
-  std::vector<CFaceO*> face;     // core face index -> CMeshO face
+  std::vector<size_t> face;      // core face index -> index in CMeshO::face (which may move)
 };
 CoreCopy to_core(CMeshO& m);
 
 // Per-vertex lock for "Selected": a vertex may go only if every face around it is selected
 // (as Quadric Edge Collapse Decimation does).
-std::vector<uint8_t> lock_outside_selection(const CoreCopy& copy);
+std::vector<uint8_t> lock_outside_selection(const CMeshO& m, const CoreCopy& copy);
 
 // Writes the simplified mesh back: removed vertices are deleted, faces the core left untouched
 // keep every attribute, new faces are added (selected when `select_new_faces`), then the mesh

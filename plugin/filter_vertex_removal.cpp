@@ -141,7 +141,7 @@ QString FilterVertexRemovalPlugin::simplify_layer(MeshModel& m, const FilterSett
   vrs::Options o = s.options_for(level, m.cm.fn, m.cm.vn);
   std::vector<uint8_t> lock;
   if (s.selected) {
-    lock = vrs_plugin::lock_outside_selection(copy);
+    lock = vrs_plugin::lock_outside_selection(m.cm, copy);
     o.locked = &lock;
   }
   o.progress = progress;

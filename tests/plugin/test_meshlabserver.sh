@@ -128,6 +128,17 @@ else
   fail "ours + QECD script failed: $(tail -3 "$out/both.log")"
 fi
 
+# Chained with QECD both ways (QECD enables vertex-face adjacency, which our result must keep
+# consistent for the next filter).
+{ mlx_begin; mlx_qecd TargetFaceNum=8000; mlx_vertex_removal TargetFaceNum=5000
+  mlx_qecd TargetFaceNum=3000; mlx_vertex_removal TargetFaceNum=2000; mlx_end; } >"$out/s.mlx"
+if server "$out/chain.log" -i "$fandisk" -o "$out/chain.ply" -m sa -s "$out/s.mlx" && [ -s "$out/chain.ply" ]; then
+  f=$(ply_count "$out/chain.ply" face)
+  [ "$f" -le 2000 ] && [ "$f" -ge 1999 ] && ok || fail "chain: $f faces"
+else
+  fail "chain: $(tail -3 "$out/chain.log")"
+fi
+
 # The example scripts shipped in plugin/scripts/ all run and simplify (the LOD one into new
 # layers, so the saved current layer is the untouched input).
 for example in "$top"/plugin/scripts/*.mlx; do
