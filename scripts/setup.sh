@@ -14,7 +14,9 @@ want=(build-essential cmake pkg-config git xz-utils libgtest-dev libgmock-dev li
       clang-format libeigen3-dev
       # MeshLab itself, what its plugin headers need, and a display for it
       meshlab qtbase5-dev libqt5opengl5-dev libqt5xmlpatterns5-dev libglew-dev
-      xvfb xauth xdotool imagemagick)
+      xvfb xauth xdotool imagemagick
+      # the benchmark's peers and plots
+      libmeshoptimizer-dev libvtk9-dev gnuplot-nox)
 want+=("$@")
 missing=()
 for p in "${want[@]}"; do

@@ -12,7 +12,7 @@ top=$(cd "$(dirname "$0")/.." && pwd)
 if [ "${1:-}" != "--no-sanitizers" ]; then
   echo "== the same tests under AddressSanitizer + UndefinedBehaviorSanitizer"
   cmake -S "$top" -B "$top/build/asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVRS_SANITIZE=ON \
-    -DVRS_BUILD_TESTS=ON -DVRS_BUILD_PLUGIN=OFF >/dev/null
+    -DVRS_BUILD_TESTS=ON -DVRS_BUILD_PLUGIN=OFF -DVRS_BUILD_BENCH=OFF >/dev/null
   cmake --build "$top/build/asan" -j "$(nproc)"
   (cd "$top/build/asan" && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
     ctest --output-on-failure -j "$(nproc)")

@@ -1,0 +1,154 @@
+// vrs_bench: every method on the same mesh and targets, one CSV line per run.
+//   vrs_bench MESH [--name N] [--ratios 0.5,0.1,0.01] [--methods ours,qecd,meshopt,vtk]
+//             [--samples S] [--header]
+//   vrs_bench --compare A B [--samples S]   symmetric error of B against A: "max mean rms"
+// Methods: ours (defaults), ours-linear / ours-log / ours-heap (queue ablation), ours-intN
+// (N intervals), qecd, meshopt, vtk. Each run is a child process, so memory high-water marks do
+// not carry over from one run to the next.
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <cstdio>
+#include <cstdlib>
+#include <sstream>
+#include <string>
+#include <vector>
+
+#include "mesh_io.h"
+#include "peers.h"
+#include "surface_error.h"
+
+namespace {
+
+std::vector<std::string> split(const std::string& s) {
+  std::vector<std::string> out;
+  std::stringstream in(s);
+  for (std::string item; std::getline(in, item, ',');)
+    if (!item.empty()) out.push_back(item);
+  return out;
+}
+
+bool run_method(const std::string& method, const vrs::Mesh& in, size_t target,
+                vrs_bench::PeerResult& r) {
+  using namespace vrs_bench;
+  if (method == "qecd")
+    r = run_qecd(in, target);
+  else if (method == "meshopt")
+    r = run_meshopt(in, target);
+  else if (method == "vtk")
+    r = run_vtk(in, target);
+  else if (method.rfind("ours", 0) == 0) {
+    vrs::Options o;
+    if (method == "ours-linear")
+      o.mapping = vrs::IntervalMapping::Linear;
+    else if (method == "ours-log")
+      o.mapping = vrs::IntervalMapping::Logarithmic;
+    else if (method == "ours-heap")
+      o.queue = vrs::QueueKind::Heap;
+    else if (method.rfind("ours-int", 0) == 0)
+      o.intervals = std::atoi(method.c_str() + 8);
+    else if (method != "ours")
+      return false;
+    r = run_ours(in, target, o);
+  } else {
+    return false;
+  }
+  return true;
+}
+
+bool load_core(const std::string& path, vrs::Mesh& out) {
+  vrs_tool::LoadResult loaded = vrs_tool::load(path);
+  if (!loaded.doc) {
+    std::fprintf(stderr, "vrs_bench: %s\n", loaded.error.c_str());
+    return false;
+  }
+  out = vrs_tool::to_core(*loaded.doc);
+  vrs_tool::close(loaded.doc);
+  return true;
+}
+
+int compare(int argc, char** argv) {
+  if (argc < 4) return 2;
+  size_t samples = 200000;
+  if (argc >= 6 && std::string(argv[4]) == "--samples")
+    samples = std::strtoull(argv[5], nullptr, 10);
+  vrs::Mesh a, b;
+  if (!load_core(argv[2], a) || !load_core(argv[3], b)) return 1;
+  vrs_bench::SurfaceError e = vrs_bench::surface_error(a, b, samples);
+  std::printf("%.6g %.6g %.6g\n", e.max, e.mean, e.rms);
+  return 0;
+}
+
+} // namespace
+
+int main(int argc, char** argv) {
+  if (argc < 2) {
+    std::fprintf(stderr, "usage: vrs_bench MESH [--name N] [--ratios R,..] [--methods M,..] "
+                         "[--samples S] [--header]\n");
+    return 2;
+  }
+  if (std::string(argv[1]) == "--compare") return compare(argc, argv);
+  std::string path = argv[1], name;
+  std::vector<std::string> ratios = {"0.5", "0.1", "0.01"},
+                           methods = {"ours", "qecd", "meshopt", "vtk"};
+  size_t samples = 200000;
+  bool header = false;
+  for (int i = 2; i < argc; ++i) {
+    std::string a = argv[i];
+    auto next = [&]() { return i + 1 < argc ? std::string(argv[++i]) : std::string(); };
+    if (a == "--name")
+      name = next();
+    else if (a == "--ratios")
+      ratios = split(next());
+    else if (a == "--methods")
+      methods = split(next());
+    else if (a == "--samples")
+      samples = std::strtoull(next().c_str(), nullptr, 10);
+    else if (a == "--header")
+      header = true;
+    else {
+      std::fprintf(stderr, "vrs_bench: unknown option %s\n", a.c_str());
+      return 2;
+    }
+  }
+  if (name.empty()) {
+    name = path.substr(path.find_last_of('/') + 1);
+    name = name.substr(0, name.find('.'));
+  }
+  vrs::Mesh in;
+  if (!load_core(path, in)) return 1;
+
+  if (header)
+    std::printf("mesh,input_faces,ratio,target_faces,method,output_faces,output_vertices,seconds,"
+                "peak_mb,extra_mb,error_max,error_mean,error_rms,note\n");
+  std::fflush(stdout);
+  int failures = 0;
+  for (const std::string& ratio : ratios) {
+    const size_t target = size_t(std::atof(ratio.c_str()) * double(in.face_count()) + 0.5);
+    for (const std::string& method : methods) {
+      pid_t pid = fork();
+      if (pid == 0) {
+        vrs_bench::PeerResult r;
+        if (!run_method(method, in, target, r)) {
+          std::fprintf(stderr, "vrs_bench: unknown method %s\n", method.c_str());
+          _exit(2);
+        }
+        vrs_bench::SurfaceError e = vrs_bench::surface_error(in, r.mesh, samples);
+        std::printf("%s,%zu,%s,%zu,%s,%zu,%zu,%.6f,%.1f,%.1f,%.6g,%.6g,%.6g,%s\n", name.c_str(),
+                    in.face_count(), ratio.c_str(), target, method.c_str(), r.mesh.face_count(),
+                    r.mesh.vertex_count(), r.seconds, r.peak_mb, r.extra_mb, e.max, e.mean, e.rms,
+                    r.note.c_str());
+        std::fflush(stdout);
+        _exit(0);
+      }
+      int status = 0;
+      waitpid(pid, &status, 0);
+      if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
+        std::fprintf(stderr, "vrs_bench: %s on %s at %s failed (status %d)\n", method.c_str(),
+                     name.c_str(), ratio.c_str(), status);
+        ++failures;
+      }
+    }
+  }
+  return failures ? 1 : 0;
+}

@@ -1,0 +1,21 @@
+#include <chrono>
+
+#include "peers.h"
+
+namespace vrs_bench {
+
+PeerResult run_ours(const vrs::Mesh& in, size_t target_faces, vrs::Options o) {
+  PeerResult r;
+  r.mesh = in;
+  o.target.kind = vrs::TargetKind::Faces;
+  o.target.faces = target_faces;
+  MemoryProbe probe;
+  const auto t0 = std::chrono::steady_clock::now();
+  vrs::Report rep = vrs::simplify(r.mesh, o);
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  probe.finish(r);
+  if (!rep.target_reached) r.note = vrs::stop_reason_name(rep.stop);
+  return r;
+}
+
+} // namespace vrs_bench

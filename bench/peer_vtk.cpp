@@ -1,0 +1,58 @@
+#include <chrono>
+
+#include <vtkCellArray.h>
+#include <vtkDecimatePro.h>
+#include <vtkIdList.h>
+#include <vtkNew.h>
+#include <vtkPoints.h>
+#include <vtkPolyData.h>
+
+#include "peers.h"
+
+namespace vrs_bench {
+
+PeerResult run_vtk(const vrs::Mesh& in, size_t target_faces) {
+  vtkNew<vtkPoints> points;
+  points->SetDataTypeToFloat();
+  points->SetNumberOfPoints(vtkIdType(in.vertex_count()));
+  for (size_t v = 0; v < in.vertex_count(); ++v)
+    points->SetPoint(vtkIdType(v), &in.positions[3 * v]);
+  vtkNew<vtkCellArray> cells;
+  cells->AllocateExact(vtkIdType(in.face_count()), vtkIdType(3 * in.face_count()));
+  for (size_t f = 0; f < in.face_count(); ++f) {
+    vtkIdType ids[3] = {in.triangles[3 * f], in.triangles[3 * f + 1], in.triangles[3 * f + 2]};
+    cells->InsertNextCell(3, ids);
+  }
+  vtkNew<vtkPolyData> poly;
+  poly->SetPoints(points);
+  poly->SetPolys(cells);
+
+  vtkNew<vtkDecimatePro> deci;
+  deci->SetInputData(poly);
+  deci->SetTargetReduction(1.0 -
+                           double(target_faces) / double(std::max<size_t>(1, in.face_count())));
+  deci->PreserveTopologyOn(); // no splits, no holes: like ours, a subset of the vertices
+  PeerResult r;
+  MemoryProbe probe;
+  const auto t0 = std::chrono::steady_clock::now();
+  deci->Update();
+  r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+  probe.finish(r);
+
+  vtkPolyData* out = deci->GetOutput();
+  for (vtkIdType p = 0; p < out->GetNumberOfPoints(); ++p) {
+    double x[3];
+    out->GetPoint(p, x);
+    r.mesh.positions.insert(r.mesh.positions.end(), {float(x[0]), float(x[1]), float(x[2])});
+  }
+  vtkCellArray* polys = out->GetPolys();
+  vtkNew<vtkIdList> ids;
+  for (polys->InitTraversal(); polys->GetNextCell(ids);)
+    if (ids->GetNumberOfIds() == 3)
+      for (int k = 0; k < 3; ++k)
+        r.mesh.triangles.push_back(uint32_t(ids->GetId(k)));
+  if (r.mesh.face_count() > target_faces + target_faces / 100) r.note = "target not reached";
+  return r;
+}
+
+} // namespace vrs_bench

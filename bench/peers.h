@@ -1,0 +1,40 @@
+// The simplifiers compared, each called the way its own users call it, on the same plain mesh
+// and target face count. `seconds` times the simplification call only (not conversion or I/O).
+#pragma once
+
+#include <string>
+
+#include "vrs/simplify.h"
+
+namespace vrs_bench {
+
+struct PeerResult {
+  vrs::Mesh mesh;
+  double seconds = 0;
+  double peak_mb = 0;  // resident memory high-water mark during the timed call, whole process
+  double extra_mb = 0; // that peak minus the resident memory just before the call
+  std::string note;    // why a target was missed
+};
+
+// Brackets the timed call: resets the kernel's high-water mark (Linux clear_refs), and reads it
+// back afterwards into the result. Costs nothing inside the call.
+class MemoryProbe {
+ public:
+  MemoryProbe();
+  void finish(PeerResult& r) const;
+
+ private:
+  double before_mb_ = 0;
+};
+
+// vrsimplify with `options` (its target is replaced by the face count).
+PeerResult run_ours(const vrs::Mesh& in, size_t target_faces, vrs::Options options);
+// MeshLab's Quadric Edge Collapse Decimation: vcglib's TriEdgeCollapseQuadric with the filter's
+// dialog defaults and its post-simplification cleaning (filter_meshing 2020.09).
+PeerResult run_qecd(const vrs::Mesh& in, size_t target_faces);
+// meshoptimizer's meshopt_simplify (keeps a subset of the vertices), no error limit.
+PeerResult run_meshopt(const vrs::Mesh& in, size_t target_faces);
+// VTK's vtkDecimatePro (Schroeder's vertex removal) with PreserveTopology on, as ours.
+PeerResult run_vtk(const vrs::Mesh& in, size_t target_faces);
+
+} // namespace vrs_bench
