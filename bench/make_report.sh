@@ -1,0 +1,88 @@
+#!/usr/bin/env bash
+# bench/results.csv -> bench/REPORT.md (tables) and bench/plots/*.png (gnuplot).
+#   bench/make_report.sh CSV OUT_DIR
+set -euo pipefail
+csv=$1 out=$2
+mkdir -p "$out/plots"
+report=$out/REPORT.md
+machine="$(nproc) cores, $(awk '/MemTotal/ { printf "%.0f GiB", $2 / 1048576 }' /proc/meminfo), $(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//')"
+
+{
+echo "# vrsimplify benchmark"
+echo
+echo "Measured $(date -u +%Y-%m-%d) on $machine by \`scripts/bench.sh\` (data: \`bench/results.csv\`)."
+echo "Every run is a child process of \`build/bin/vrs_bench\`; time is the simplification call only;"
+echo "memory is the process's resident high-water mark during that call (and the part above what it"
+echo "held before it); error is the symmetric Hausdorff distance (vertices + 200 000 area-uniform"
+echo "samples per side, exact closest points, vcglib as MeshLab's filter), relative to the input's"
+echo "bounding-box diagonal, in %. QECD = MeshLab's Quadric Edge Collapse Decimation with its dialog"
+echo "defaults (it simplifies boundaries; ours and vtkDecimatePro keep topology, ours keeps boundaries)."
+echo
+echo "## Headline"
+echo
+awk -F, 'NR > 1 && ($5 == "ours" || $5 == "qecd" || $5 == "meshopt" || $5 == "vtk") {
+    k = $1 "," $3; f[k, $5] = $6; t[k, $5] = $8; mx[k, $5] = $11; mn[k, $5] = $12; mem[k, $5] = $9
+    if (!(k in seen)) { seen[k] = 1; order[++n] = k } }
+  END {
+    print "| mesh | ratio | faces (ours/QECD/meshopt/vtk) | time s (ours/QECD/meshopt/vtk) | max err % (ours/QECD/meshopt/vtk) | mean err % (ours/QECD/meshopt/vtk) |"
+    print "|---|---|---|---|---|---|"
+    for (i = 1; i <= n; i++) { k = order[i]; split(k, p, ",")
+      printf "| %s | %s | %s / %s / %s / %s | %.3f / %.3f / %.3f / %.3f | %.3f / %.3f / %.3f / %.3f | %.4f / %.4f / %.4f / %.4f |\n",
+        p[1], p[2], f[k,"ours"], f[k,"qecd"], f[k,"meshopt"], f[k,"vtk"],
+        t[k,"ours"], t[k,"qecd"], t[k,"meshopt"], t[k,"vtk"],
+        100*mx[k,"ours"], 100*mx[k,"qecd"], 100*mx[k,"meshopt"], 100*mx[k,"vtk"],
+        100*mn[k,"ours"], 100*mn[k,"qecd"], 100*mn[k,"meshopt"], 100*mn[k,"vtk"] }
+    lm = lx = lt = lq = lmem = 0; c = 0
+    for (i = 1; i <= n; i++) { k = order[i]
+      if (mn[k,"qecd"] > 0 && mx[k,"qecd"] > 0 && mn[k,"ours"] > 0) {
+        lm += log(mn[k,"ours"] / mn[k,"qecd"]); lx += log(mx[k,"ours"] / mx[k,"qecd"]); c++ }
+      lt += log(t[k,"ours"] / t[k,"meshopt"]); lq += log(t[k,"qecd"] / t[k,"ours"])
+      lmem += log(mem[k,"ours"] / mem[k,"meshopt"]) }
+    print ""
+    printf "Geometric means over the %d cases: our mean error / QECD = **%.2f** (target <= 1.5), our max error / QECD = **%.2f** (target <= 1.0); our time / meshoptimizer = **%.2f** (target <= 1), QECD time / ours = **%.2f** (target >= 10 on 1 M+ meshes); our peak memory / meshoptimizer = %.2f.\n",
+      c, exp(lm / c), exp(lx / c), exp(lt / n), exp(lq / n), exp(lmem / n) }' "$csv"
+echo
+echo "## Hash table ablation"
+echo
+echo "Against the exact heap (\`ours-heap\`), same meshes and ratios: geometric mean of the mean and"
+echo "max error ratios, and total simplification time. \`ours\` is the default (linear mapping, 1000"
+echo "intervals)."
+echo
+echo "| variant | mean err / heap | max err / heap | total time s |"
+echo "|---|---|---|---|"
+awk -F, 'NR > 1 && $5 ~ /^ours/ { k = $1 "," $3; mn[k, $5] = $12; mx[k, $5] = $11; t[$5] += $8; v[$5] = 1; keys[k] = 1 }
+  END {
+    for (m in v) { a = b = 0; c = 0
+      for (k in keys) if (mn[k, "ours-heap"] > 0 && mn[k, m] > 0) {
+        a += log(mn[k, m] / mn[k, "ours-heap"]); b += log(mx[k, m] / mx[k, "ours-heap"]); c++ }
+      printf "| %s | %.3f | %.3f | %.3f |\n", m, c ? exp(a / c) : 0, c ? exp(b / c) : 0, t[m] } }' "$csv" | sort -t'|' -k2,2
+echo
+echo "## Error against face count"
+echo
+for m in $(awk -F, 'NR > 1 { print $1 }' "$csv" | uniq); do
+  echo "![$m](plots/error_$m.png)"
+done
+} >"$report"
+
+# One plot per mesh: mean error against output faces, log-log, one line per method.
+for m in $(awk -F, 'NR > 1 { print $1 }' "$csv" | uniq); do
+  for method in ours qecd meshopt vtk; do
+    awk -F, -v m="$m" -v me="$method" '$1 == m && $5 == me { print $6, 100 * $12, 100 * $11 }' "$csv" |
+      sort -n >"$out/plots/.$m.$method.dat"
+  done
+  gnuplot <<GP
+set terminal pngcairo size 720,480 font ",10"
+set output "$out/plots/error_$m.png"
+set title "$m: symmetric Hausdorff mean error (solid) and max (dashed)"
+set logscale xy
+set xlabel "output faces"
+set ylabel "% of bounding-box diagonal"
+set key left bottom
+set grid
+methods = "ours qecd meshopt vtk"
+file(i) = sprintf("$out/plots/.$m.%s.dat", word(methods, i))
+plot for [i=1:4] file(i) using 1:2 with linespoints lc i lw 2 title word(methods, i), \
+     for [i=1:4] file(i) using 1:3 with lines lc i dt 2 notitle
+GP
+  rm -f "$out/plots/.$m."*.dat
+done
