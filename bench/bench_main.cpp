@@ -2,6 +2,8 @@
 //   vrs_bench MESH [--name N] [--ratios 0.5,0.1,0.01] [--methods ours,qecd,meshopt,vtk]
 //             [--samples S] [--header]
 //   vrs_bench --compare A B [--samples S]   symmetric error of B against A: "max mean rms"
+//   vrs_bench --loop MESH LEVELS OUT.ply       Loop subdivision (large inputs)
+//   vrs_bench --terrain K OUT.ply              (2^K + 1)^2 fractal terrain
 // Methods: ours (defaults), ours-linear / ours-log / ours-heap (queue ablation), ours-intN
 // (N intervals), qecd, meshopt, vtk. Each run is a child process, so memory high-water marks do
 // not carry over from one run to the next.
@@ -14,6 +16,7 @@
 #include <string>
 #include <vector>
 
+#include "make_inputs.h"
 #include "mesh_io.h"
 #include "peers.h"
 #include "surface_error.h"
@@ -79,6 +82,29 @@ int compare(int argc, char** argv) {
   return 0;
 }
 
+int make(int argc, char** argv) {
+  vrs::Mesh m;
+  std::string out;
+  if (std::string(argv[1]) == "--loop" && argc == 5) {
+    vrs::Mesh in;
+    if (!load_core(argv[2], in)) return 1;
+    m = vrs_bench::loop_subdivide(in, std::atoi(argv[3]));
+    out = argv[4];
+  } else if (std::string(argv[1]) == "--terrain" && argc == 4) {
+    m = vrs_bench::fractal_terrain(std::atoi(argv[2]), 2026);
+    out = argv[3];
+  } else {
+    return 2;
+  }
+  std::string err = vrs_bench::write_ply(m, out);
+  if (!err.empty()) {
+    std::fprintf(stderr, "vrs_bench: %s\n", err.c_str());
+    return 1;
+  }
+  std::printf("%s: %zu vertices, %zu faces\n", out.c_str(), m.vertex_count(), m.face_count());
+  return 0;
+}
+
 } // namespace
 
 int main(int argc, char** argv) {
@@ -88,6 +114,8 @@ int main(int argc, char** argv) {
     return 2;
   }
   if (std::string(argv[1]) == "--compare") return compare(argc, argv);
+  if (std::string(argv[1]) == "--loop" || std::string(argv[1]) == "--terrain")
+    return make(argc, argv);
   std::string path = argv[1], name;
   std::vector<std::string> ratios = {"0.5", "0.1", "0.01"},
                            methods = {"ours", "qecd", "meshopt", "vtk"};

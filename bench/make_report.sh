@@ -57,6 +57,20 @@ awk -F, 'NR > 1 && $5 ~ /^ours/ { k = $1 "," $3; mn[k, $5] = $12; mx[k, $5] = $1
         a += log(mn[k, m] / mn[k, "ours-heap"]); b += log(mx[k, m] / mx[k, "ours-heap"]); c++ }
       printf "| %s | %.3f | %.3f | %.3f |\n", m, c ? exp(a / c) : 0, c ? exp(b / c) : 0, t[m] } }' "$csv" | sort -t'|' -k2,2
 echo
+echo "## Scaling (10 %)"
+echo
+echo "Time per input triangle and peak memory against input size, every mesh at 10 %."
+echo
+echo "| mesh | input faces | ours s | meshopt s | QECD s | ours / meshopt | QECD / ours | ours µs per input face | ours MB | meshopt MB | QECD MB |"
+echo "|---|---|---|---|---|---|---|---|---|---|---|"
+awk -F, 'NR > 1 && $3 == "0.1" { k = $1; f[k] = $2; t[k, $5] = $8; mem[k, $5] = $9; if (!(k in s)) { s[k] = 1; o[++n] = k } }
+  END { for (i = 1; i <= n; i++) { k = o[i]
+    printf "| %s | %d | %.3f | %.3f | %.3f | %.2f | %.2f | %.2f | %.0f | %.0f | %.0f |\n", k, f[k], t[k,"ours"], t[k,"meshopt"], t[k,"qecd"],
+      t[k,"ours"] / t[k,"meshopt"], t[k,"qecd"] / t[k,"ours"], 1e6 * t[k,"ours"] / f[k], mem[k,"ours"], mem[k,"meshopt"], mem[k,"qecd"] } }' "$csv" |
+  sort -t'|' -k3,3n
+echo
+echo "![time](plots/scaling_time.png) ![memory](plots/scaling_memory.png)"
+echo
 echo "## Error against face count"
 echo
 for m in $(awk -F, 'NR > 1 { print $1 }' "$csv" | uniq); do
@@ -86,3 +100,26 @@ plot for [i=1:4] file(i) using 1:2 with linespoints lc i lw 2 title word(methods
 GP
   rm -f "$out/plots/.$m."*.dat
 done
+
+# Scaling: time per input face and peak memory against input faces, log-log, at 10 %.
+for method in ours qecd meshopt vtk; do
+  awk -F, -v me="$method" '$3 == "0.1" && $5 == me { print $2, 1e6 * $8 / $2, $9 }' "$csv" | sort -n >"$out/plots/.scale.$method.dat"
+done
+gnuplot <<GP
+set terminal pngcairo size 720,480 font ",10"
+set logscale xy
+set grid
+set key left top
+set xlabel "input faces"
+methods = "ours qecd meshopt vtk"
+file(i) = sprintf("$out/plots/.scale.%s.dat", word(methods, i))
+set output "$out/plots/scaling_time.png"
+set title "simplification time per input face at 10 % (flat = linear)"
+set ylabel "microseconds per input face"
+plot for [i=1:4] file(i) using 1:2 with linespoints lc i lw 2 title word(methods, i)
+set output "$out/plots/scaling_memory.png"
+set title "peak resident memory during the call at 10 %"
+set ylabel "MB"
+plot for [i=1:4] file(i) using 1:3 with linespoints lc i lw 2 title word(methods, i)
+GP
+rm -f "$out/plots/.scale."*.dat

@@ -2,12 +2,16 @@
 # The benchmark: vrsimplify beside MeshLab's quadric decimation, meshoptimizer and vtkDecimatePro
 # on CGAL's real meshes at 50 %, 10 % and 1 % (time, peak memory, symmetric Hausdorff), plus the
 # hash-table ablation; writes bench/results.csv and bench/REPORT.md with plots in bench/plots/.
-#   scripts/bench.sh [MESH_NAME...]     (default: the six meshes of the report)
+#   scripts/bench.sh [--large] [MESH_NAME...]   (default: the six meshes of the report)
+# --large adds the scaling runs at 10 %: bunny00 Loop-subdivided to 1.2 M, 4.8 M and 19 M faces
+# and fractal terrains of 2049^2 and 4097^2 vertices (made in third_party/bench-inputs/).
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
 "$top/scripts/setup.sh"
 "$top/scripts/build.sh" -DVRS_BUILD_TESTS=OFF
 data=$top/third_party/cgal-data/data/meshes
+large=0
+if [ "${1:-}" = --large ]; then large=1; shift; fi
 meshes=("$@")
 [ ${#meshes[@]} -gt 0 ] || meshes=(bunny00 armadillo fandisk mushroom three_peaks elephant)
 methods=ours,qecd,meshopt,vtk,ours-log,ours-heap,ours-int100,ours-int10000
@@ -19,5 +23,23 @@ for m in "${meshes[@]}"; do
   "$top/build/bin/vrs_bench" "$data/$m.off" --name "$m" --methods "$methods" $first >>"$csv"
   first=
 done
+if [ $large -eq 1 ]; then
+  inputs=$top/third_party/bench-inputs
+  mkdir -p "$inputs"
+  for l in 2 3 4; do
+    [ -s "$inputs/bunny_loop$l.ply" ] || "$top/build/bin/vrs_bench" --loop "$data/bunny00.off" $l "$inputs/bunny_loop$l.ply" >&2
+  done
+  for k in 11 12; do
+    [ -s "$inputs/terrain_k$k.ply" ] || "$top/build/bin/vrs_bench" --terrain $k "$inputs/terrain_k$k.ply" >&2
+  done
+  for m in bunny_loop2 bunny_loop3 bunny_loop4 terrain_k11 terrain_k12; do
+    echo "== $m" >&2
+    # vtkDecimatePro needs minutes past a million faces: it runs on the smallest only.
+    methods=ours,meshopt,qecd
+    [ $m = bunny_loop2 ] && methods=ours,meshopt,qecd,vtk
+    "$top/build/bin/vrs_bench" "$inputs/$m.ply" --name "$m" --ratios 0.1 --methods $methods \
+      --samples 200000 >>"$csv"
+  done
+fi
 "$top/bench/make_report.sh" "$csv" "$top/bench"
 echo "wrote $csv and $top/bench/REPORT.md" >&2
