@@ -1,6 +1,6 @@
 // vrs_bench: every method on the same mesh and targets, one CSV line per run.
 //   vrs_bench MESH [--name N] [--ratios 0.5,0.1,0.01] [--methods ours,qecd,meshopt,vtk]
-//             [--samples S] [--header]
+//             [--samples S] [--header] [--save DIR]
 //   vrs_bench --compare A B [--samples S]   symmetric error of B against A: "max mean rms"
 //   vrs_bench --loop MESH LEVELS OUT.ply       Loop subdivision (large inputs)
 //   vrs_bench --terrain K OUT.ply              (2^K + 1)^2 fractal terrain
@@ -110,7 +110,7 @@ int make(int argc, char** argv) {
 int main(int argc, char** argv) {
   if (argc < 2) {
     std::fprintf(stderr, "usage: vrs_bench MESH [--name N] [--ratios R,..] [--methods M,..] "
-                         "[--samples S] [--header]\n");
+                         "[--samples S] [--header] [--save DIR]\n");
     return 2;
   }
   if (std::string(argv[1]) == "--compare") return compare(argc, argv);
@@ -121,6 +121,7 @@ int main(int argc, char** argv) {
                            methods = {"ours", "qecd", "meshopt", "vtk"};
   size_t samples = 200000;
   bool header = false;
+  std::string save_dir; // where to write each run's output mesh (for the report's renders)
   for (int i = 2; i < argc; ++i) {
     std::string a = argv[i];
     auto next = [&]() { return i + 1 < argc ? std::string(argv[++i]) : std::string(); };
@@ -134,6 +135,8 @@ int main(int argc, char** argv) {
       samples = std::strtoull(next().c_str(), nullptr, 10);
     else if (a == "--header")
       header = true;
+    else if (a == "--save")
+      save_dir = next();
     else {
       std::fprintf(stderr, "vrs_bench: unknown option %s\n", a.c_str());
       return 2;
@@ -161,6 +164,8 @@ int main(int argc, char** argv) {
           std::fprintf(stderr, "vrs_bench: unknown method %s\n", method.c_str());
           _exit(2);
         }
+        if (!save_dir.empty())
+          vrs_bench::write_ply(r.mesh, save_dir + "/" + name + "_" + ratio + "_" + method + ".ply");
         vrs_bench::SurfaceError e = vrs_bench::surface_error(in, r.mesh, samples);
         std::printf("%s,%zu,%s,%zu,%s,%zu,%zu,%.6f,%.1f,%.1f,%.6g,%.6g,%.6g,%s\n", name.c_str(),
                     in.face_count(), ratio.c_str(), target, method.c_str(), r.mesh.face_count(),

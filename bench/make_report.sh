@@ -71,6 +71,19 @@ awk -F, 'NR > 1 && $3 == "0.1" { k = $1; f[k] = $2; t[k, $5] = $8; mem[k, $5] = 
 echo
 echo "![time](plots/scaling_time.png) ![memory](plots/scaling_memory.png)"
 echo
+if [ -d "$out/renders" ]; then
+  echo "## At 1 %: original, ours, QECD, meshoptimizer"
+  echo
+  echo "Flat shading with edges, rendered offscreen by VTK (\`build/bin/vrs_render\`)."
+  echo
+  echo "| original | vrsimplify | QECD | meshoptimizer |"
+  echo "|---|---|---|---|"
+  for m in fandisk bunny00; do
+    [ -f "$out/renders/${m}_ours.png" ] || continue
+    echo "| ![](renders/${m}_original.png) | ![](renders/${m}_ours.png) | ![](renders/${m}_qecd.png) | ![](renders/${m}_meshopt.png) |"
+  done
+  echo
+fi
 echo "## Error against face count"
 echo
 for m in $(awk -F, 'NR > 1 { print $1 }' "$csv" | uniq); do

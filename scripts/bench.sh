@@ -41,5 +41,23 @@ if [ $large -eq 1 ]; then
       --samples 200000 >>"$csv"
   done
 fi
+# Renders at 1 %: the original and each method's result, flat shading with edges (VTK, offscreen).
+renders=$top/bench/renders
+work=$(mktemp -d)
+mkdir -p "$renders"
+for m in fandisk bunny00; do
+  "$top/build/bin/vrs_bench" "$data/$m.off" --name "$m" --ratios 0.01 --methods ours,qecd,meshopt \
+    --samples 1000 --save "$work" >/dev/null
+  view="--azimuth 30 --elevation 20"
+  [ $m = bunny00 ] && view="--azimuth 0 --elevation 0"
+  # shellcheck disable=SC2086
+  xvfb-run -a -s '-screen 0 1280x1024x24' "$top/build/bin/vrs_render" "$data/$m.off" "$renders/${m}_original.png" $view
+  for method in ours qecd meshopt; do
+    # shellcheck disable=SC2086
+    xvfb-run -a -s '-screen 0 1280x1024x24' "$top/build/bin/vrs_render" "$work/${m}_0.01_$method.ply" \
+      "$renders/${m}_$method.png" $view
+  done
+done
+rm -rf "$work"
 "$top/bench/make_report.sh" "$csv" "$top/bench"
 echo "wrote $csv and $top/bench/REPORT.md" >&2
