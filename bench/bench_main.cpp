@@ -179,6 +179,11 @@ int main(int argc, char** argv) {
       if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) {
         std::fprintf(stderr, "vrs_bench: %s on %s at %s failed (status %d)\n", method.c_str(),
                      name.c_str(), ratio.c_str(), status);
+        // The row stays in the table: a peer that crashes on an input is a result too.
+        std::printf("%s,%zu,%s,%zu,%s,,,,,,,,,failed (%s %d)\n", name.c_str(), in.face_count(),
+                    ratio.c_str(), target, method.c_str(), WIFSIGNALED(status) ? "signal" : "exit",
+                    WIFSIGNALED(status) ? WTERMSIG(status) : WEXITSTATUS(status));
+        std::fflush(stdout);
         ++failures;
       }
     }

@@ -107,6 +107,18 @@ bool FilterVertexRemovalPlugin::apply_checked(MeshDocument& md, const RichParame
 
   const int levels = s.lod_levels;
   std::vector<MeshModel*> created;
+  // A failure (returned or thrown) takes back the layers this call made; the input layer is
+  // only written to when it is the one being simplified, and then only once it has succeeded.
+  struct Rollback {
+    MeshDocument& md;
+    std::vector<MeshModel*>& created;
+    bool done = false;
+    ~Rollback() {
+      if (!done)
+        for (MeshModel* c : created)
+          md.delMesh(c);
+    }
+  } rollback{md, created};
   MeshModel* source = input;
   for (int level = 1; level <= levels; ++level) {
     MeshModel* target = input;
@@ -124,13 +136,12 @@ bool FilterVertexRemovalPlugin::apply_checked(MeshDocument& md, const RichParame
     };
     QString error = simplify_layer(*target, s, level, progress);
     if (!error.isEmpty()) {
-      for (MeshModel* c : created)
-        md.delMesh(c); // the input layer was never touched
       errorMessage = error;
       return false;
     }
     source = target;
   }
+  rollback.done = true;
   cb(100, "Vertex Removal Decimation done");
   return true;
 }

@@ -20,7 +20,8 @@ first=--header
 : >"$csv"
 for m in "${meshes[@]}"; do
   echo "== $m" >&2
-  "$top/build/bin/vrs_bench" "$data/$m.off" --name "$m" --methods "$methods" $first >>"$csv"
+  "$top/build/bin/vrs_bench" "$data/$m.off" --name "$m" --methods "$methods" $first >>"$csv" ||
+    echo "some runs on $m failed: see their rows" >&2
   first=
 done
 if [ $large -eq 1 ]; then
@@ -38,7 +39,7 @@ if [ $large -eq 1 ]; then
     methods=ours,meshopt,qecd
     [ $m = bunny_loop2 ] && methods=ours,meshopt,qecd,vtk
     "$top/build/bin/vrs_bench" "$inputs/$m.ply" --name "$m" --ratios 0.1 --methods $methods \
-      --samples 200000 >>"$csv"
+      --samples 200000 >>"$csv" || echo "some runs on $m failed: see their rows" >&2
   done
 fi
 # Renders at 1 %: the original and each method's result, flat shading with edges (VTK, offscreen).
