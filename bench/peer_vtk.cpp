@@ -4,28 +4,15 @@
 #include <vtkDecimatePro.h>
 #include <vtkIdList.h>
 #include <vtkNew.h>
-#include <vtkPoints.h>
 #include <vtkPolyData.h>
 
 #include "peers.h"
+#include "vtk_mesh.h"
 
 namespace vrs_bench {
 
 PeerResult run_vtk(const vrs::Mesh& in, size_t target_faces) {
-  vtkNew<vtkPoints> points;
-  points->SetDataTypeToFloat();
-  points->SetNumberOfPoints(vtkIdType(in.vertex_count()));
-  for (size_t v = 0; v < in.vertex_count(); ++v)
-    points->SetPoint(vtkIdType(v), &in.positions[3 * v]);
-  vtkNew<vtkCellArray> cells;
-  cells->AllocateExact(vtkIdType(in.face_count()), vtkIdType(3 * in.face_count()));
-  for (size_t f = 0; f < in.face_count(); ++f) {
-    vtkIdType ids[3] = {in.triangles[3 * f], in.triangles[3 * f + 1], in.triangles[3 * f + 2]};
-    cells->InsertNextCell(3, ids);
-  }
-  vtkNew<vtkPolyData> poly;
-  poly->SetPoints(points);
-  poly->SetPolys(cells);
+  vtkSmartPointer<vtkPolyData> poly = to_vtk(in);
 
   vtkNew<vtkDecimatePro> deci;
   deci->SetInputData(poly);

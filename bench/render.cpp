@@ -7,10 +7,8 @@
 
 #include <vtkActor.h>
 #include <vtkCamera.h>
-#include <vtkCellArray.h>
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
-#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
@@ -19,6 +17,7 @@
 #include <vtkWindowToImageFilter.h>
 
 #include "mesh_io.h"
+#include "vtk_mesh.h"
 
 int main(int argc, char** argv) {
   if (argc < 3) {
@@ -45,17 +44,7 @@ int main(int argc, char** argv) {
   const vrs::Mesh m = vrs_tool::to_core(*loaded.doc);
   vrs_tool::close(loaded.doc);
 
-  vtkNew<vtkPoints> points;
-  for (size_t v = 0; v < m.vertex_count(); ++v)
-    points->InsertNextPoint(m.positions[3 * v], m.positions[3 * v + 1], m.positions[3 * v + 2]);
-  vtkNew<vtkCellArray> cells;
-  for (size_t f = 0; f < m.face_count(); ++f) {
-    vtkIdType ids[3] = {m.triangles[3 * f], m.triangles[3 * f + 1], m.triangles[3 * f + 2]};
-    cells->InsertNextCell(3, ids);
-  }
-  vtkNew<vtkPolyData> poly;
-  poly->SetPoints(points);
-  poly->SetPolys(cells);
+  vtkSmartPointer<vtkPolyData> poly = vrs_bench::to_vtk(m);
   vtkNew<vtkPolyDataMapper> mapper;
   mapper->SetInputData(poly);
   vtkNew<vtkActor> actor;

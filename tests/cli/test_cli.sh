@@ -49,13 +49,7 @@ awk 'NF == 0 { next } ++n == 1 { next } n == 2 { nv = $1; print "solid fandisk";
   cmp -s "$out/a1.off" "$out/b1.off" && ok || fail "ascii and binary PLY inputs differ"
 
 # 4. Vertex colors: every output vertex, with its color, is an input vertex with that color.
-awk 'NF == 0 { next } ++n == 1 { next } n == 2 { nv = $1; nf = $2;
-       print "ply\nformat ascii 1.0\nelement vertex " nv;
-       print "property float x\nproperty float y\nproperty float z";
-       print "property uchar red\nproperty uchar green\nproperty uchar blue\nproperty uchar alpha";
-       print "element face " nf "\nproperty list uchar int vertex_indices\nend_header"; next }
-     n > 2 && n <= 2 + nv { printf "%s %s %s %d %d %d 255\n", $1, $2, $3, (n * 7) % 256, (n * 13) % 256, (n * 29) % 256; next }
-     n > 2 + nv { print }' "$in" >"$out/colored.ply"
+bash "$(dirname "$0")/../support/colored_ply.sh" "$in" "$out/colored.ply"
 "$bin" "$out/colored.ply" "$out/colored-out.ply" --ratio 0.1 --ascii >/dev/null
 norm() { # vertex lines of an ascii PLY, numbers normalised
   awk '/^end_header/ { body = 1; next } body && n < nv { printf "%.6g %.6g %.6g %d %d %d\n", $1, $2, $3, $4, $5, $6; n++ }

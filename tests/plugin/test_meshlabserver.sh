@@ -93,13 +93,7 @@ fi
 
 # Vertex colors: a colored PLY in, ascii PLY with colors out: each vertex with its color is an
 # input vertex with that color.
-awk 'NF == 0 { next } ++n == 1 { next } n == 2 { nv = $1; nf = $2;
-       print "ply\nformat ascii 1.0\nelement vertex " nv;
-       print "property float x\nproperty float y\nproperty float z";
-       print "property uchar red\nproperty uchar green\nproperty uchar blue\nproperty uchar alpha";
-       print "element face " nf "\nproperty list uchar int vertex_indices\nend_header"; next }
-     n > 2 && n <= 2 + nv { printf "%s %s %s %d %d %d 255\n", $1, $2, $3, (n * 7) % 256, (n * 13) % 256, (n * 29) % 256; next }
-     n > 2 + nv { print }' "$fandisk" >"$out/colored.ply"
+bash "$(dirname "$0")/../support/colored_ply.sh" "$fandisk" "$out/colored.ply"
 script mlx_vertex_removal TargetPerc=0.1
 if server "$out/colors.log" -i "$out/colored.ply" -o "$out/colored-out.ply" -m vc sa -s "$out/s.mlx" && [ -s "$out/colored-out.ply" ]; then
   ply_vertices "$out/colored.ply" >"$out/c-in.vtx"
