@@ -4,9 +4,9 @@
 //   vrs_bench --compare A B [--samples S]   symmetric error of B against A: "max mean rms"
 //   vrs_bench --loop MESH LEVELS OUT.ply       Loop subdivision (large inputs)
 //   vrs_bench --terrain K OUT.ply              (2^K + 1)^2 fractal terrain
-// Methods: ours (defaults), ours-linear / ours-log / ours-heap (queue ablation), ours-intN
-// (N intervals), qecd, meshopt, vtk. Each run is a child process, so memory high-water marks do
-// not carry over from one run to the next.
+// Methods: ours (defaults) with suffixes -factor / -local (priority), -linear / -log (mapping),
+// -heap (exact queue), -intN (N intervals), combinable; qecd, meshopt, vtk. Each run is a child
+// process, so memory high-water marks do not carry over from one run to the next.
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -41,17 +41,27 @@ bool run_method(const std::string& method, const vrs::Mesh& in, size_t target,
   else if (method == "vtk")
     r = run_vtk(in, target);
   else if (method.rfind("ours", 0) == 0) {
+    // "ours" then any of -factor|-local, -linear|-log, -heap, -intN, e.g. ours-local-heap.
     vrs::Options o;
-    if (method == "ours-linear")
-      o.mapping = vrs::IntervalMapping::Linear;
-    else if (method == "ours-log")
-      o.mapping = vrs::IntervalMapping::Logarithmic;
-    else if (method == "ours-heap")
-      o.queue = vrs::QueueKind::Heap;
-    else if (method.rfind("ours-int", 0) == 0)
-      o.intervals = std::atoi(method.c_str() + 8);
-    else if (method != "ours")
-      return false;
+    std::stringstream parts(method.substr(4));
+    std::string p;
+    while (std::getline(parts, p, '-')) {
+      if (p.empty()) continue;
+      if (p == "factor")
+        o.priority = vrs::Priority::Factor;
+      else if (p == "local")
+        o.priority = vrs::Priority::LocalError;
+      else if (p == "linear")
+        o.mapping = vrs::IntervalMapping::Linear;
+      else if (p == "log")
+        o.mapping = vrs::IntervalMapping::Logarithmic;
+      else if (p == "heap")
+        o.queue = vrs::QueueKind::Heap;
+      else if (p.rfind("int", 0) == 0 && p.size() > 3)
+        o.intervals = std::atoi(p.c_str() + 3);
+      else
+        return false;
+    }
     r = run_ours(in, target, o);
   } else {
     return false;

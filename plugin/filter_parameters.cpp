@@ -14,10 +14,9 @@ void declare_parameters(MeshModel& m, RichParameterList& par) {
                          "(0.1 keeps 10 %); overrides the target number of faces."));
   par.addParam(RichInt("TargetVertNum", 0, "Target number of vertices",
                        "If non zero, stop at this many vertices; overrides the face targets."));
-  par.addParam(RichFloat("MaxFactor", 0, "Max evaluation factor (absolute)",
-                         "If non zero, remove only vertices whose evaluation factor (mean distance "
-                         "to the neighbours along the average plane's normal, in mesh units) is "
-                         "at most this; overrides the count targets."));
+  par.addParam(RichFloat("MaxFactor", 0, "Max priority (absolute)",
+                         "If non zero, remove only vertices whose priority (see Priority; in "
+                         "mesh units) is at most this; overrides the count targets."));
   par.addParam(RichBool("AutoStop", false, "Auto stop (last interval)",
                         "Stop by the paper's own rule: when only the last interval of the hash "
                         "table (the most important vertices) is left. Overrides every target."));
@@ -29,6 +28,15 @@ void declare_parameters(MeshModel& m, RichParameterList& par) {
                         "3D: each hole is projected on its neighbours' average plane. 2.5D: on "
                         "the XY plane, factor = mean height difference (height fields). 2D: on "
                         "the mesh's own plane (flat meshes in any orientation)."));
+  par.addParam(RichEnum("Priority", 0,
+                        QStringList() << "Local error of the new patch"
+                                      << "Evaluation factor (paper)",
+                        "Priority",
+                        "What the hash table sorts the vertices by. Local error: each removal is "
+                        "planned first and priced by how far the new triangles stand from the "
+                        "old ones, weighted by the patch's area (closer to the original). "
+                        "Evaluation factor: the paper's mean distance of the vertex to its "
+                        "neighbours' average plane (about 3x faster, larger error)."));
   par.addParam(RichInt("Intervals", 1000, "Hash table intervals",
                        "Number of intervals the factors are sorted into (at least 2). More "
                        "intervals follow the factor order more closely; Auto stop keeps the "
@@ -53,6 +61,7 @@ QString read_parameters(const RichParameterList& par, const CMeshO& m, FilterSet
   s.max_factor = par.getFloat("MaxFactor");
   s.auto_stop = par.getBool("AutoStop");
   const int mode = par.getEnum("Mode");
+  const int priority = par.getEnum("Priority");
   s.intervals = par.getInt("Intervals");
   s.preserve_boundary = par.getBool("PreserveBoundary");
   s.selected = par.getBool("Selected");
@@ -68,9 +77,11 @@ QString read_parameters(const RichParameterList& par, const CMeshO& m, FilterSet
   if (s.target_vertices < 0)
     return QString("Target number of vertices must be >= 0, got %1.").arg(s.target_vertices);
   if (!(s.max_factor >= 0 && std::isfinite(s.max_factor)))
-    return QString("Max evaluation factor must be >= 0, got %1.").arg(s.max_factor);
+    return QString("Max priority must be >= 0, got %1.").arg(s.max_factor);
   if (mode < 0 || mode > 2) return QString("Unknown mesh kind %1.").arg(mode);
   s.mode = static_cast<vrs::Mode>(mode);
+  if (priority < 0 || priority > 1) return QString("Unknown priority %1.").arg(priority);
+  s.priority = priority == 0 ? vrs::Priority::LocalError : vrs::Priority::Factor;
   if (s.intervals < 2 || s.intervals > (1 << 20))
     return QString("Hash table intervals must be in [2, 1048576], got %1.").arg(s.intervals);
   if (s.lod_levels < 1 || s.lod_levels > 16)
@@ -89,6 +100,7 @@ QString read_parameters(const RichParameterList& par, const CMeshO& m, FilterSet
 vrs::Options FilterSettings::options_for(int level, int faces, int vertices) const {
   vrs::Options o;
   o.mode = mode;
+  o.priority = priority;
   o.intervals = intervals;
   o.simplify_boundary = !preserve_boundary;
   vrs::Target& t = o.target;

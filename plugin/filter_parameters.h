@@ -19,6 +19,7 @@ struct FilterSettings {
   double max_factor = 0;
   bool auto_stop = false;
   vrs::Mode mode = vrs::Mode::Surface3D;
+  vrs::Priority priority = vrs::Priority::LocalError; // dialog: 0 local error, 1 factor
   int intervals = 1000;
   bool preserve_boundary = true;
   bool selected = false;

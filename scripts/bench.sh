@@ -14,7 +14,7 @@ large=0
 if [ "${1:-}" = --large ]; then large=1; shift; fi
 meshes=("$@")
 [ ${#meshes[@]} -gt 0 ] || meshes=(bunny00 armadillo fandisk mushroom three_peaks elephant)
-methods=ours,qecd,meshopt,vtk,ours-log,ours-heap,ours-int100,ours-int10000
+methods=ours,ours-factor,qecd,meshopt,vtk,ours-log,ours-heap,ours-int100,ours-int10000
 csv=$top/bench/results.csv
 first=--header
 : >"$csv"
@@ -36,8 +36,8 @@ if [ $large -eq 1 ]; then
   for m in bunny_loop2 bunny_loop3 bunny_loop4 terrain_k11 terrain_k12; do
     echo "== $m" >&2
     # vtkDecimatePro needs minutes past a million faces: it runs on the smallest only.
-    methods=ours,meshopt,qecd
-    [ $m = bunny_loop2 ] && methods=ours,meshopt,qecd,vtk
+    methods=ours,ours-factor,meshopt,qecd
+    [ $m = bunny_loop2 ] && methods=ours,ours-factor,meshopt,qecd,vtk
     "$top/build/bin/vrs_bench" "$inputs/$m.ply" --name "$m" --ratios 0.1 --methods $methods \
       --samples 200000 >>"$csv" || echo "some runs on $m failed: see their rows" >&2
   done

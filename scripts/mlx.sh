@@ -19,7 +19,12 @@ _mlx_filter() {
     # XML escapes (the \& keeps bash 5.2 from reading & as "the match")
     value=${value//&/\&amp;} value=${value//</\&lt;} value=${value//>/\&gt;} value=${value//\"/\&quot;}
     case $type in
-    RichEnum) printf '  <Param type="RichEnum" name="%s" value="%s" enum_cardinality="3" enum_val0="3D surface (average plane)" enum_val1="2.5D terrain (XY plane)" enum_val2="2D planar mesh"/>\n' "$name" "$value" ;;
+    RichEnum)
+      if [ "$name" = Priority ]; then
+        printf '  <Param type="RichEnum" name="%s" value="%s" enum_cardinality="2" enum_val0="Local error of the new patch" enum_val1="Evaluation factor (paper)"/>\n' "$name" "$value"
+      else
+        printf '  <Param type="RichEnum" name="%s" value="%s" enum_cardinality="3" enum_val0="3D surface (average plane)" enum_val1="2.5D terrain (XY plane)" enum_val2="2D planar mesh"/>\n' "$name" "$value"
+      fi ;;
     RichAbsPerc) printf '  <Param type="RichAbsPerc" name="%s" value="%s" min="0" max="%s"/>\n' "$name" "$value" "$value" ;;
     *) printf '  <Param type="%s" name="%s" value="%s"/>\n' "$type" "$name" "$value" ;;
     esac
@@ -31,7 +36,8 @@ _mlx_filter() {
 mlx_vertex_removal() {
   _mlx_filter "Simplification: Vertex Removal Decimation" \
     "RichInt TargetFaceNum 0" "RichFloat TargetPerc 0" "RichInt TargetVertNum 0" \
-    "RichFloat MaxFactor 0" "RichBool AutoStop false" "RichEnum Mode 0" "RichInt Intervals 1000" \
+    "RichFloat MaxFactor 0" "RichBool AutoStop false" "RichEnum Mode 0" "RichEnum Priority 0" \
+    "RichInt Intervals 1000" \
     "RichBool PreserveBoundary true" "RichBool Selected false" "RichBool AutoClean true" \
     "RichInt LODLevels 1" -- "$@"
 }

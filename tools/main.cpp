@@ -19,11 +19,13 @@ const char* kUsage =
     "  --ratio R          keep R (0..1) of the input faces\n"
     "  --faces N          stop at N faces or fewer\n"
     "  --vertices N       stop at N vertices or fewer\n"
-    "  --max-factor F     remove only vertices with evaluation factor <= F (mesh units)\n"
+    "  --max-factor F     remove only vertices whose priority is <= F (mesh units)\n"
     "  --auto             stop when only the last interval of the hash table is left\n"
     "options:\n"
     "  --mode surface|terrain|planar   3D average plane (default), 2.5D XY plane, 2D mesh plane\n"
     "  --intervals N                   hash-table intervals (default 1000)\n"
+    "  --priority local-error|factor   sort by the local error of the planned re-triangulation\n"
+    "                                  (default) or by the paper's evaluation factor\n"
     "  --mapping linear|log            factor -> interval mapping (default linear)\n"
     "  --queue intervals|heap          hash table (default) or exact heap (reference)\n"
     "  --simplify-boundary             also remove boundary vertices (default: kept)\n"
@@ -134,6 +136,9 @@ int main(int argc, char** argv) {
     } else if (a == "--queue") {
       if (!(v = value()) || !vrs::parse_queue(v, opt.queue))
         return usage_error("--queue must be intervals or heap");
+    } else if (a == "--priority") {
+      if (!(v = value()) || !vrs::parse_priority(v, opt.priority))
+        return usage_error("--priority must be factor or local-error");
     } else if (a == "--mapping") {
       if (!(v = value()) || !vrs::parse_mapping(v, opt.mapping))
         return usage_error("--mapping must be linear or log");

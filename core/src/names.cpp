@@ -65,4 +65,18 @@ bool parse_mapping(const std::string& s, IntervalMapping& out) {
   return true;
 }
 
+bool parse_priority(const std::string& s, Priority& out) {
+  if (s == "factor")
+    out = Priority::Factor;
+  else if (s == "local-error")
+    out = Priority::LocalError;
+  else
+    return false;
+  return true;
+}
+
+const char* priority_name(Priority p) {
+  return p == Priority::LocalError ? "local-error" : "factor";
+}
+
 } // namespace vrs

@@ -47,7 +47,7 @@ bool star_direction(uint32_t v, const Ring& ring, const Evaluator& eval, Vec3& o
 
 Reject plan_removal(uint32_t v, const Ring& ring, Vec3 n, const Evaluator& eval,
                     const Topology& topo, const uint32_t* tris, const float* surface_normals,
-                    const RemovalLimits& limits, Patch& out) {
+                    const RemovalLimits& limits, Patch& out, bool check_topology) {
   const int k = ring.verts;
   if (k < 3) return RejectFold;
   Vec3 u, w;
@@ -80,8 +80,9 @@ Reject plan_removal(uint32_t v, const Ring& ring, Vec3 n, const Evaluator& eval,
     return RejectFold;
   }
 
+  out.normal = n;
   // Topology first (it cannot change with the projection), then shape.
-  for (int t = 0; t < out.count; ++t) {
+  for (int t = 0; t < out.count && check_topology; ++t) {
     const auto& tri = out.tri[t];
     if (topo.has_triangle(ring.v[tri[0]], ring.v[tri[1]], ring.v[tri[2]], tris))
       return RejectTriangle;

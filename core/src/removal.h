@@ -21,11 +21,13 @@ struct RemovalLimits {
 bool star_direction(uint32_t v, const Ring& ring, const Evaluator& eval, Vec3& out);
 
 // Returns RejectCount when the removal is valid (the patch is in `out`), else the reason.
+// `check_topology` = false skips the two mesh look-ups (new triangle / diagonal already
+// there): a planning-only pass for the priority, redone in full when the vertex is popped.
 // `surface_normals` holds the input's unit vertex normals (3 floats a vertex): a new triangle
 // must face the same side as the original surface at its corners, which the local plane alone
 // cannot promise after many removals have moved the ring.
 Reject plan_removal(uint32_t v, const Ring& ring, Vec3 normal, const Evaluator& eval,
                     const Topology& topo, const uint32_t* tris, const float* surface_normals,
-                    const RemovalLimits& limits, Patch& out);
+                    const RemovalLimits& limits, Patch& out, bool check_topology = true);
 
 } // namespace vrs

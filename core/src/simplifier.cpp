@@ -7,6 +7,7 @@
 #include "evaluation.h"
 #include "heap_queue.h"
 #include "input_check.h"
+#include "local_error.h"
 #include "removal.h"
 #include "topology.h"
 #include "vrs/simplify.h"
@@ -56,8 +57,12 @@ class Simplifier {
   bool removable(VertexKind k) const {
     return k == VertexKind::Interior || (opt_.simplify_boundary && k == VertexKind::Boundary);
   }
-  // Factor of v with its current ring, or +inf when v must stay.
-  double evaluate(uint32_t v, const Ring& ring, Evaluation* e = nullptr);
+  // Priority of v with its current ring (the paper's factor or the planned patch's local
+  // error), or +inf when v must stay.
+  double evaluate(uint32_t v, const Ring& ring);
+  // Plans v's removal on its evaluated plane, then on a fallback direction; RejectCount = ok.
+  Reject plan(uint32_t v, const Ring& ring, const Evaluation& e, Patch& patch,
+              bool check_topology = true);
   bool target_met() const;
   float progress_fraction(size_t queued, size_t queued0) const;
   template <class Queue> void commit(uint32_t v, const Ring& ring, const Patch& patch, Queue& q);
@@ -74,6 +79,7 @@ class Simplifier {
   std::vector<uint32_t> face_source_; // per face slot: its input face, or kRemoved once rewritten
   size_t faces_ = 0, vertices_ = 0, target_faces_ = 0, target_vertices_ = 0;
   size_t faces0_ = 0;
+  double reference_area_ = 1; // mean input triangle area (LocalError's weight)
 };
 
 void Simplifier::prepare() {
@@ -95,6 +101,8 @@ void Simplifier::prepare() {
 
   topo_.build(t, n);
   normals_ = vertex_normals(mesh_.positions, t);
+  if (opt_.priority == Priority::LocalError)
+    reference_area_ = mean_triangle_area(mesh_.positions.data(), t);
   factor_.assign(n, std::numeric_limits<float>::infinity());
   faces_ = faces0_ = t.size() / 3;
   Ring ring;
@@ -124,10 +132,33 @@ void Simplifier::prepare() {
   target_vertices_ = tk == TargetKind::Vertices ? opt_.target.vertices : 0;
 }
 
-double Simplifier::evaluate(uint32_t v, const Ring& ring, Evaluation* out) {
+double Simplifier::evaluate(uint32_t v, const Ring& ring) {
   Evaluation e = eval_.evaluate(v, ring, opt_.simplify_boundary);
-  if (out) *out = e;
-  return e.factor;
+  if (opt_.priority == Priority::Factor || !std::isfinite(e.factor)) return e.factor;
+  Patch patch;
+  // The mesh look-ups wait for the pop, where the plan is made again in full.
+  Reject why = plan(v, ring, e, patch, /*check_topology=*/false);
+  if (why != RejectCount) {
+    ++rep_.rejected[why]; // not queued; evaluated again when its ring changes
+    return std::numeric_limits<double>::infinity();
+  }
+  return patch_error(v, ring, patch, eval_, reference_area_);
+}
+
+Reject Simplifier::plan(uint32_t v, const Ring& ring, const Evaluation& e, Patch& patch,
+                        bool check_topology) {
+  const uint32_t* tris = mesh_.triangles.data();
+  Reject why = plan_removal(v, ring, e.normal, eval_, topo_, tris, normals_.data(), limits_, patch,
+                            check_topology);
+  // At tips, creases and thin parts the average plane of a strongly curved ring can fold it
+  // or tilt the patch away, while another direction still sees the ring as a star.
+  if ((why == RejectFold || why == RejectFlip) && opt_.mode == Mode::Surface3D) {
+    Vec3 d;
+    if (star_direction(v, ring, eval_, d))
+      why = plan_removal(v, ring, d, eval_, topo_, tris, normals_.data(), limits_, patch,
+                         check_topology);
+  }
+  return why;
 }
 
 bool Simplifier::target_met() const {
@@ -251,18 +282,11 @@ template <class Queue> void Simplifier::run(Queue& queue) {
     queue.erase(v);
     ++pops_since_respread;
     VertexKind kind = topo_.ring(v, mesh_.triangles.data(), opt_.max_valence, ring);
-    Evaluation e;
-    if (!removable(kind) || !std::isfinite(evaluate(v, ring, &e))) continue;
-    const uint32_t* tris = mesh_.triangles.data();
-    Reject why =
-        plan_removal(v, ring, e.normal, eval_, topo_, tris, normals_.data(), limits_, patch);
-    // At tips, creases and thin parts the average plane of a strongly curved ring can fold it
-    // or tilt the patch away, while another direction still sees the ring as a star.
-    if ((why == RejectFold || why == RejectFlip) && opt_.mode == Mode::Surface3D) {
-      Vec3 d;
-      if (star_direction(v, ring, eval_, d))
-        why = plan_removal(v, ring, d, eval_, topo_, tris, normals_.data(), limits_, patch);
-    }
+    if (!removable(kind)) continue;
+    Evaluation e = eval_.evaluate(v, ring, opt_.simplify_boundary);
+    if (!std::isfinite(e.factor)) continue;
+    // The plan is made again: a diagonal may have become an edge since v was queued.
+    Reject why = plan(v, ring, e, patch);
     if (why != RejectCount) {
       ++rep_.rejected[why]; // retried when a neighbour's removal changes its ring
       continue;

@@ -12,6 +12,7 @@ namespace vrs {
 
 struct Patch {
   int count = 0;
+  Vec3 normal;                                      // the direction the ring was projected along
   std::array<std::array<uint8_t, 3>, kMaxRing> tri; // indices into the ring, counter-clockwise
 };
 

@@ -70,7 +70,8 @@ done
 # 6. Every target kind and option is accepted and does what it says.
 for args in "--faces 3000" "--vertices 2000" "--max-factor 0.0001" "--auto" "--auto --intervals 50" \
   "--ratio 0.2 --queue heap" "--ratio 0.2 --mapping log" "--ratio 0.2 --mode terrain" \
-  "--ratio 0.2 --mode planar" "--ratio 0.2 --simplify-boundary"; do
+  "--ratio 0.2 --mode planar" "--ratio 0.2 --simplify-boundary" "--ratio 0.2 --priority factor" \
+  "--ratio 0.2 --priority local-error" "--max-factor 0.0001 --priority factor"; do
   # shellcheck disable=SC2086
   if "$bin" "$in" "$out/t.ply" $args --json >"$out/t.json" 2>"$out/err"; then
     f=$(json_num "$out/t.json" output_faces)
@@ -97,6 +98,7 @@ expect_exit 2 "at most one target" "$bin" "$in" "$out/never.ply" --faces 10 --au
 expect_exit 2 "--ratio needs" "$bin" "$in" "$out/never.ply" --ratio abc
 expect_exit 1 "ratio must be in" "$bin" "$in" "$out/never.ply" --ratio 2
 expect_exit 2 "--mode must be" "$bin" "$in" "$out/never.ply" --mode cubist
+expect_exit 2 "--priority must be" "$bin" "$in" "$out/never.ply" --priority best
 expect_exit 1 "intervals" "$bin" "$in" "$out/never.ply" --intervals 1
 expect_exit 2 "required" "$bin" "$in"
 expect_exit 3 "cannot write" "$bin" "$in" "$out/no/such/dir/x.ply"

@@ -24,8 +24,8 @@ inner() {
   xdotool mousemove 560 161 mousemove 678 637; sleep 0.5; shot 2-filter-entry
   xdotool click 1; sleep 2                                  # Simplification: Vertex Removal ...
   shot 3-dialog
-  xdotool mousemove 401 680 click 1; sleep 3                # Apply
-  xdotool mousemove 138 680 click 1; sleep 2                # Close the dialog
+  xdotool mousemove 401 711 click 1; sleep 3                # Apply
+  xdotool mousemove 138 711 click 1; sleep 2                # Close the dialog
   shot 4-result
   kill "$pid" 2>/dev/null; wait "$pid" 2>/dev/null
   return 0

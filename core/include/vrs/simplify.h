@@ -37,7 +37,7 @@ enum class TargetKind : uint8_t {
   Faces,     // stop at or below `faces` triangles
   Vertices,  // stop at or below `vertices` referenced vertices
   Ratio,     // stop at or below `ratio` * input triangles
-  MaxFactor, // remove only vertices whose evaluation factor is <= `max_factor` (mesh units)
+  MaxFactor, // remove only vertices whose priority (see Priority) is <= `max_factor` (mesh units)
   Auto,      // stop when only the last interval of the hash table is left
 };
 
@@ -59,6 +59,13 @@ enum class QueueKind : uint8_t { Intervals, Heap };
 // vertices of a smooth mesh are (small factors).
 enum class IntervalMapping : uint8_t { Linear, Logarithmic };
 
+// What the hash table sorts by. Factor is the paper's evaluation factor (the vertex's mean
+// distance to its neighbours' average plane). LocalError plans the removal first and sorts by
+// how far the re-triangulated patch stands from the surface it replaces (the larger of the
+// vertex's distance to the new patch and the new triangles' and diagonals' distance to the old
+// fan): costlier, and closer to what a surface-error measure sees.
+enum class Priority : uint8_t { Factor, LocalError };
+
 // Progress: fraction of the planned work done, in [0, 1]. Return false to stop; the mesh is left
 // valid (every removal is atomic).
 using ProgressFn = std::function<bool(float fraction)>;
@@ -67,6 +74,7 @@ struct Options {
   Target target;
   Mode mode = Mode::Surface3D;
   QueueKind queue = QueueKind::Intervals;
+  Priority priority = Priority::LocalError;
   IntervalMapping mapping = IntervalMapping::Linear;
   // Number of hash-table intervals, >= 2. The last one holds the vertices of highest factor;
   // TargetKind::Auto stops when only it is left, so more intervals simplify further.
@@ -127,7 +135,7 @@ struct Report {
   size_t kept_boundary = 0, kept_nonmanifold = 0, kept_locked = 0, kept_high_valence = 0;
   size_t unreferenced_vertices = 0; // left untouched
 
-  double max_removed_factor = 0.0; // largest evaluation factor of a removed vertex
+  double max_removed_factor = 0.0; // largest priority (factor or local error) of a removed vertex
   std::vector<uint32_t> remap;     // old vertex index -> new index, or kRemoved
   // For each output face, the input face it is (same corners, same order), or kRemoved for a
   // face the re-triangulation made: lets an adapter keep per-face data of untouched faces.
@@ -145,5 +153,7 @@ Report simplify(Mesh& mesh, const Options& options);
 bool parse_mode(const std::string& s, Mode& out);
 bool parse_queue(const std::string& s, QueueKind& out);
 bool parse_mapping(const std::string& s, IntervalMapping& out);
+bool parse_priority(const std::string& s, Priority& out);
+const char* priority_name(Priority p);
 
 } // namespace vrs

@@ -1,0 +1,106 @@
+#include "local_error.h"
+
+#include <algorithm>
+#include <limits>
+
+namespace vrs {
+
+double point_triangle_distance(Vec3 p, Vec3 a, Vec3 b, Vec3 c) {
+  // Voronoi regions of the triangle's vertices, edges and face, in that order.
+  Vec3 ab = b - a, ac = c - a, ap = p - a;
+  double d1 = dot(ab, ap), d2 = dot(ac, ap);
+  if (d1 <= 0 && d2 <= 0) return length(ap);
+  Vec3 bp = p - b;
+  double d3 = dot(ab, bp), d4 = dot(ac, bp);
+  if (d3 >= 0 && d4 <= d3) return length(bp);
+  double vc = d1 * d4 - d3 * d2;
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return length(p - (a + ab * (d1 / (d1 - d3))));
+  Vec3 cp = p - c;
+  double d5 = dot(ab, cp), d6 = dot(ac, cp);
+  if (d6 >= 0 && d5 <= d6) return length(cp);
+  double vb = d5 * d2 - d1 * d6;
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return length(p - (a + ac * (d2 / (d2 - d6))));
+  double va = d3 * d6 - d5 * d4;
+  if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
+    double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
+    return length(p - (b + (c - b) * w));
+  }
+  double denom = va + vb + vc;
+  if (!(std::fabs(denom) > 0)) // no area: the nearest of its edges
+    return std::min({length(ap), length(bp), length(cp)});
+  double v = vb / denom, w = vc / denom;
+  return length(p - (a + ab * v + ac * w));
+}
+
+double patch_error(uint32_t v, const Ring& ring, const Patch& patch, const Evaluator& eval,
+                   double reference_area) {
+  const int k = ring.verts;
+  const Vec3 c = eval.position(v);
+  std::array<Vec3, kMaxRing + 1> q;
+  for (int i = 0; i < k; ++i)
+    q[i] = eval.position(ring.v[i]);
+  // The old fan projects without folds along the patch's normal, so a point of the new patch
+  // lies over one old triangle: measure to that one (to all of them if rounding says none).
+  Vec3 u, w;
+  plane_basis(patch.normal, u, w);
+  std::array<Vec2, kMaxRing + 1> p;
+  for (int i = 0; i < k; ++i)
+    p[i] = {dot(q[i] - c, u), dot(q[i] - c, w)};
+  const Vec2 o{0, 0};
+  auto to_old_fan = [&](Vec3 x) {
+    Vec2 s{dot(x - c, u), dot(x - c, w)};
+    for (int i = 0; i < ring.faces; ++i) {
+      int j = (i + 1) % k;
+      if (!(orient2d(o, p[i], s) >= 0 && orient2d(o, s, p[j]) >= 0 && orient2d(p[i], p[j], s) >= 0))
+        continue;
+      double d = point_triangle_distance(x, c, q[i], q[j]);
+      if (i > 0 || ring.closed()) {
+        int h = (i + k - 1) % k;
+        d = std::min(d, point_triangle_distance(x, c, q[h], q[i]));
+      }
+      if (j + 1 < k || ring.closed())
+        d = std::min(d, point_triangle_distance(x, c, q[j], q[(j + 1) % k]));
+      return d;
+    }
+    double d = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < ring.faces; ++i)
+      d = std::min(d, point_triangle_distance(x, c, q[i], q[(i + 1) % k]));
+    return d;
+  };
+
+  double to_new = std::numeric_limits<double>::infinity(), worst = 0;
+  for (int t = 0; t < patch.count; ++t) {
+    const auto& tri = patch.tri[t];
+    Vec3 a = q[tri[0]], b = q[tri[1]], d = q[tri[2]];
+    to_new = std::min(to_new, point_triangle_distance(c, a, b, d));
+    worst = std::max(worst, to_old_fan((a + b + d) * (1.0 / 3)));
+    for (int e = 0; e < 3; ++e) {
+      int i = tri[e], j = tri[(e + 1) % 3];
+      // Ring edges are kept as they are; diagonals (and an open ring's closing edge) are new.
+      bool ring_edge = i + 1 == j || j + 1 == i ||
+                       (ring.closed() && ((i == k - 1 && j == 0) || (j == k - 1 && i == 0)));
+      // Each diagonal is shared by two new triangles: measure it once.
+      if (!ring_edge && (i < j || (i == k - 1 && j == 0)))
+        worst = std::max(worst, to_old_fan((q[i] + q[j]) * 0.5));
+    }
+  }
+  if (patch.count == 0) to_new = 0;
+  double area = 0;
+  for (int i = 0; i < ring.faces; ++i)
+    area += 0.5 * length(cross(q[i] - c, q[(i + 1) % k] - c));
+  return std::max(worst, to_new) * std::sqrt(area / reference_area);
+}
+
+double mean_triangle_area(const float* pos, const std::vector<uint32_t>& tris) {
+  double sum = 0;
+  size_t n = 0;
+  for (size_t i = 0; i + 2 < tris.size(); i += 3) {
+    auto at = [&](uint32_t v) { return Vec3{pos[3 * v], pos[3 * v + 1], pos[3 * v + 2]}; };
+    Vec3 a = at(tris[i]);
+    double area = 0.5 * length(cross(at(tris[i + 1]) - a, at(tris[i + 2]) - a));
+    if (std::isfinite(area)) sum += area, ++n;
+  }
+  return n && sum > 0 ? sum / double(n) : 1.0;
+}
+
+} // namespace vrs
