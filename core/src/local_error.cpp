@@ -39,8 +39,22 @@ double patch_error(uint32_t v, const Ring& ring, const Patch& patch, const Evalu
   std::array<Vec3, kMaxRing + 1> q;
   for (int i = 0; i < k; ++i)
     q[i] = eval.position(ring.v[i]);
+  // Unit normals of the old fan's triangles, for the plane-distance lower bound that skips
+  // most exact point-triangle queries; their lengths give the fan's area.
+  std::array<Vec3, kMaxRing> old_n;
+  double area = 0;
+  for (int i = 0; i < ring.faces; ++i) {
+    Vec3 x = cross(q[i] - c, q[(i + 1) % k] - c);
+    area += 0.5 * length(x);
+    old_n[i] = normalized(x);
+  }
+  auto to_old = [&](Vec3 x, int i, double best) {
+    if (std::fabs(dot(x - c, old_n[i])) >= best) return best;
+    return std::min(best, point_triangle_distance(x, c, q[i], q[(i + 1) % k]));
+  };
   // The old fan projects without folds along the patch's normal, so a point of the new patch
-  // lies over one old triangle: measure to that one (to all of them if rounding says none).
+  // lies over one old triangle: measure to it and its two neighbours (to all of them if
+  // rounding says it lies over none).
   Vec3 u, w;
   plane_basis(patch.normal, u, w);
   std::array<Vec2, kMaxRing + 1> p;
@@ -49,30 +63,25 @@ double patch_error(uint32_t v, const Ring& ring, const Patch& patch, const Evalu
   const Vec2 o{0, 0};
   auto to_old_fan = [&](Vec3 x) {
     Vec2 s{dot(x - c, u), dot(x - c, w)};
+    double d = std::numeric_limits<double>::infinity();
     for (int i = 0; i < ring.faces; ++i) {
       int j = (i + 1) % k;
       if (!(orient2d(o, p[i], s) >= 0 && orient2d(o, s, p[j]) >= 0 && orient2d(p[i], p[j], s) >= 0))
         continue;
-      double d = point_triangle_distance(x, c, q[i], q[j]);
-      if (i > 0 || ring.closed()) {
-        int h = (i + k - 1) % k;
-        d = std::min(d, point_triangle_distance(x, c, q[h], q[i]));
-      }
-      if (j + 1 < k || ring.closed())
-        d = std::min(d, point_triangle_distance(x, c, q[j], q[(j + 1) % k]));
+      d = point_triangle_distance(x, c, q[i], q[j]);
+      if (i > 0 || ring.closed()) d = to_old(x, (i + k - 1) % k, d);
+      if (j < ring.faces) d = to_old(x, j, d);
       return d;
     }
-    double d = std::numeric_limits<double>::infinity();
     for (int i = 0; i < ring.faces; ++i)
-      d = std::min(d, point_triangle_distance(x, c, q[i], q[(i + 1) % k]));
+      d = to_old(x, i, d);
     return d;
   };
 
-  double to_new = std::numeric_limits<double>::infinity(), worst = 0;
+  double worst = 0;
   for (int t = 0; t < patch.count; ++t) {
     const auto& tri = patch.tri[t];
     Vec3 a = q[tri[0]], b = q[tri[1]], d = q[tri[2]];
-    to_new = std::min(to_new, point_triangle_distance(c, a, b, d));
     worst = std::max(worst, to_old_fan((a + b + d) * (1.0 / 3)));
     for (int e = 0; e < 3; ++e) {
       int i = tri[e], j = tri[(e + 1) % 3];
@@ -84,10 +93,24 @@ double patch_error(uint32_t v, const Ring& ring, const Patch& patch, const Evalu
         worst = std::max(worst, to_old_fan((q[i] + q[j]) * 0.5));
     }
   }
-  if (patch.count == 0) to_new = 0;
-  double area = 0;
-  for (int i = 0; i < ring.faces; ++i)
-    area += 0.5 * length(cross(q[i] - c, q[(i + 1) % k] - c));
+  // The removed vertex to the new patch: first the triangle it projects into (usually the
+  // nearest), then the others only where their plane is nearer than the best so far.
+  double to_new = patch.count ? std::numeric_limits<double>::infinity() : 0.0;
+  int first = 0;
+  for (int t = 0; t < patch.count; ++t) {
+    const auto& tri = patch.tri[t];
+    if (orient2d(p[tri[0]], p[tri[1]], o) >= 0 && orient2d(p[tri[1]], p[tri[2]], o) >= 0 &&
+        orient2d(p[tri[2]], p[tri[0]], o) >= 0) {
+      first = t;
+      break;
+    }
+  }
+  for (int n = 0; n < patch.count; ++n) {
+    const auto& tri = patch.tri[(first + n) % patch.count];
+    Vec3 a = q[tri[0]], b = q[tri[1]], d = q[tri[2]];
+    if (n > 0 && std::fabs(dot(c - a, normalized(cross(b - a, d - a)))) >= to_new) continue;
+    to_new = std::min(to_new, point_triangle_distance(c, a, b, d));
+  }
   return std::max(worst, to_new) * std::sqrt(area / reference_area);
 }
 
