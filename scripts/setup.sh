@@ -16,7 +16,9 @@ want=(build-essential cmake pkg-config git xz-utils libgtest-dev libgmock-dev li
       meshlab qtbase5-dev libqt5opengl5-dev libqt5xmlpatterns5-dev libglew-dev
       xvfb xauth xdotool imagemagick
       # the benchmark's peers and plots
-      libmeshoptimizer-dev libvtk9-dev gnuplot-nox)
+      libmeshoptimizer-dev libvtk9-dev gnuplot-nox
+      # robustness: the fuzzer (clang 14 + libFuzzer) and the sweep over assimp's test models
+      clang-14 libfuzzer-14-dev libclang-rt-14-dev libassimp-dev assimp-testmodels time)
 want+=("$@")
 missing=()
 for p in "${want[@]}"; do

@@ -1,8 +1,9 @@
 #!/usr/bin/env bash
-# Sets up, builds and runs every test: the Release build in build/ (core, CLI, and the plugin in
-# the real meshlabserver and MeshLab GUI), then the core and CLI tests again built with
-# AddressSanitizer + UndefinedBehaviorSanitizer in build/asan/ (MeshLab cannot load an
-# instrumented plugin).
+# Sets up, builds and runs every test: the Release build in build/ (core, CLI, the sweep over
+# the real meshes, and the plugin in the real meshlabserver and MeshLab GUI), then the core, CLI
+# and sweep tests again built with AddressSanitizer + UndefinedBehaviorSanitizer in build/asan/
+# (MeshLab cannot load an instrumented plugin), then a bounded libFuzzer run (VRS_FUZZ_SECONDS,
+# default 120; scripts/fuzz.sh runs longer).
 #   scripts/test.sh [--no-sanitizers]
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
@@ -16,4 +17,6 @@ if [ "${1:-}" != "--no-sanitizers" ]; then
   cmake --build "$top/build/asan" -j "$(nproc)"
   (cd "$top/build/asan" && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
     ctest --output-on-failure -j "$(nproc)")
+  echo "== libFuzzer on the core, ${VRS_FUZZ_SECONDS:-120} s"
+  "$top/scripts/fuzz.sh" "${VRS_FUZZ_SECONDS:-120}"
 fi

@@ -29,14 +29,20 @@ LoadResult load(const std::string& path) {
   LoadResult r;
   auto* doc = new VcgDocument;
   std::string error;
-  if (ends_with(path, ".obj")) {
-    error = read_obj(path, *doc);
-  } else if (ends_with(path, ".stl")) {
-    error = read_stl(path, *doc);
-  } else {
-    int err = vcg::tri::io::Importer<VcgMesh>::Open(doc->mesh, path.c_str(), doc->mask);
-    if (err != 0 && vcg::tri::io::Importer<VcgMesh>::ErrorCritical(err))
-      error = vcg::tri::io::Importer<VcgMesh>::ErrorMsg(err);
+  try {
+    if (ends_with(path, ".obj")) {
+      error = read_obj(path, *doc);
+    } else if (ends_with(path, ".stl")) {
+      error = read_stl(path, *doc);
+    } else if (ends_with(path, ".off")) {
+      error = read_off(path, *doc);
+    } else {
+      int err = vcg::tri::io::Importer<VcgMesh>::Open(doc->mesh, path.c_str(), doc->mask);
+      if (err != 0 && vcg::tri::io::Importer<VcgMesh>::ErrorCritical(err))
+        error = vcg::tri::io::Importer<VcgMesh>::ErrorMsg(err);
+    }
+  } catch (const std::exception& e) { // a malformed file asking for absurd allocations
+    error = std::string("malformed file (") + e.what() + ")";
   }
   if (!error.empty()) {
     r.error = "cannot read " + path + ": " + error;

@@ -1,9 +1,12 @@
-// File readers of our own, for two formats whose vcglib 2020.09 importer is broken:
+// File readers of our own, for the formats whose vcglib 2020.09 importer is broken:
 // - OBJ: every triangle that uses the file's first vertex is dropped (the importer checks the
 //   1-based index after making it 0-based);
 // - binary STL: the 80-byte header is read as a C string without a terminator (a stack
-//   overflow that AddressSanitizer reports on any header without a NUL).
+//   overflow that AddressSanitizer reports on any header without a NUL);
+// - OFF: a line of blanks among the vertices makes it call strtol on a null pointer (a crash,
+//   CGAL's prim.off), and a huge declared count is allocated before anything is checked.
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <fstream>
 #include <sstream>
@@ -108,6 +111,79 @@ std::string read_stl(const std::string& path, VcgDocument& doc) {
     return "neither binary (size does not match the face count) nor ascii STL";
   }
   fill(doc, pos, {}, tris);
+  return {};
+}
+
+// OFF, COFF, NOFF, CNOFF, STOFF...: positions, optional per-vertex colours (0..255 integers
+// or 0..1 floats), polygons fanned. Comments and blank lines anywhere; counts checked against
+// what the file holds before anything is allocated.
+std::string read_off(const std::string& path, VcgDocument& doc) {
+  std::ifstream in(path);
+  if (!in) return "cannot open file";
+  std::vector<std::string> lines; // non-empty, comments stripped
+  for (std::string line; std::getline(in, line);) {
+    line = line.substr(0, line.find('#'));
+    if (line.find_first_not_of(" \t\r") != std::string::npos) lines.push_back(line);
+  }
+  if (lines.empty()) return "empty file";
+  std::istringstream head(lines[0]);
+  std::string magic;
+  head >> magic;
+  if (magic.size() < 3 || magic.compare(magic.size() - 3, 3, "OFF") != 0) return "no OFF header";
+  const bool normals = magic.find('N') != std::string::npos;
+  const bool colors = magic.find('C') != std::string::npos;
+  const bool texcoords = magic.find("ST") != std::string::npos;
+  if (magic.find_first_of("4n") != std::string::npos) return "only 3D OFF files are read";
+  size_t line = 1;
+  long nv = -1, nf = -1;
+  if (!(head >> nv >> nf)) { // counts on their own line
+    if (lines.size() < 2) return "no vertex and face counts";
+    std::istringstream counts(lines[line++]);
+    if (!(counts >> nv >> nf)) return "no vertex and face counts";
+  }
+  if (nv < 0 || nf < 0) return "negative counts";
+  if (size_t(nv) + size_t(nf) > lines.size() - line)
+    return "declares " + std::to_string(nv) + " vertices and " + std::to_string(nf) +
+           " faces, but holds " + std::to_string(lines.size() - line) + " lines";
+  std::vector<vcg::Point3f> pos;
+  std::vector<vcg::Color4b> color;
+  std::vector<int> tris;
+  pos.reserve(size_t(nv));
+  for (long v = 0; v < nv; ++v, ++line) {
+    std::istringstream s(lines[line]);
+    float x, y, z, skip;
+    if (!(s >> x >> y >> z)) return "bad vertex " + std::to_string(v);
+    pos.emplace_back(x, y, z);
+    if (normals) s >> skip >> skip >> skip;
+    if (texcoords) s >> skip >> skip;
+    if (colors) {
+      float c[4] = {0, 0, 0, 255};
+      int k = 0;
+      while (k < 4 && s >> c[k])
+        ++k;
+      if (k < 3) return "vertex " + std::to_string(v) + " lacks its colour";
+      const bool unit = c[0] <= 1 && c[1] <= 1 && c[2] <= 1 && (k < 4 || c[3] <= 1);
+      auto byte = [&](float f) {
+        return uint8_t(std::min(255.0f, std::max(0.0f, unit ? f * 255 : f)));
+      };
+      color.emplace_back(byte(c[0]), byte(c[1]), byte(c[2]), k == 4 ? byte(c[3]) : 255);
+    }
+  }
+  for (long f = 0; f < nf; ++f, ++line) {
+    std::istringstream s(lines[line]);
+    long n = 0;
+    if (!(s >> n) || n < 1 || n > 1000000) return "bad face " + std::to_string(f);
+    std::vector<int> poly;
+    for (long k = 0; k < n; ++k) {
+      long i = -1;
+      if (!(s >> i)) return "face " + std::to_string(f) + " lists fewer corners than it says";
+      if (i < 0 || i >= nv) return "face " + std::to_string(f) + " names a missing vertex";
+      poly.push_back(int(i));
+    }
+    for (size_t j = 1; j + 1 < poly.size(); ++j)
+      tris.insert(tris.end(), {poly[0], poly[j], poly[j + 1]});
+  }
+  fill(doc, pos, colors ? color : std::vector<vcg::Color4b>{}, tris);
   return {};
 }
 

@@ -27,5 +27,6 @@ class VcgDocument {
 // Fill doc and return "" or an error message.
 std::string read_obj(const std::string& path, VcgDocument& doc);
 std::string read_stl(const std::string& path, VcgDocument& doc);
+std::string read_off(const std::string& path, VcgDocument& doc);
 
 } // namespace vrs_tool

@@ -13,23 +13,23 @@ double distance_to_line(Vec3 p, Vec3 a, Vec3 b) {
 
 std::vector<float> vertex_normals(const std::vector<float>& pos,
                                   const std::vector<uint32_t>& tris) {
-  // Area weights scaled by the largest coordinate: float sums of (3e38)^2 would overflow.
-  double extent = 0;
-  for (float x : pos)
-    if (std::isfinite(x)) extent = std::max(extent, std::fabs(double(x)));
-  const double scale = extent > 0 ? 1.0 / (extent * extent) : 1.0;
+  // Each face adds its unit normal. Area weights in float underflow to nothing for the small
+  // faces of a mesh that also holds one huge coordinate (found by the fuzzer: a face flipped
+  // against a vertex whose normal had vanished).
   auto at = [&](uint32_t v) { return Vec3{pos[3 * v], pos[3 * v + 1], pos[3 * v + 2]}; };
   std::vector<float> n(pos.size(), 0.0f);
   for (size_t i = 0; i + 2 < tris.size(); i += 3) {
-    Vec3 a = at(tris[i]), area = cross(at(tris[i + 1]) - a, at(tris[i + 2]) - a) * scale;
-    if (!is_finite(area)) continue;
+    Vec3 a = at(tris[i]), u = normalized(cross(at(tris[i + 1]) - a, at(tris[i + 2]) - a));
     for (int k = 0; k < 3; ++k) {
       float* s = &n[3 * size_t(tris[i + k])];
-      s[0] += float(area.x), s[1] += float(area.y), s[2] += float(area.z);
+      s[0] += float(u.x), s[1] += float(u.y), s[2] += float(u.z);
     }
   }
   for (size_t v = 0; v < n.size(); v += 3) {
-    Vec3 u = normalized(Vec3{n[v], n[v + 1], n[v + 2]});
+    // Faces that cancel out (a fin, a sheet folded onto itself) leave a rounding residue whose
+    // direction means nothing: no normal there (found by the fuzzer).
+    Vec3 sum{n[v], n[v + 1], n[v + 2]};
+    Vec3 u = length(sum) > kMinNormalSum ? normalized(sum) : Vec3{};
     n[v] = float(u.x), n[v + 1] = float(u.y), n[v + 2] = float(u.z);
   }
   return n;

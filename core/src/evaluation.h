@@ -47,7 +47,9 @@ class Evaluator {
 // Distance from p to the line through a and b (to a when a == b).
 double distance_to_line(Vec3 p, Vec3 a, Vec3 b);
 
-// Unit area-weighted vertex normals of the input surface, 3 floats a vertex (zero where none).
+// Unit vertex normals of the input surface (sum of the faces' unit normals), 3 floats a
+// vertex; zero where none, or where the sum is shorter than kMinNormalSum (faces cancelling).
+constexpr double kMinNormalSum = 1e-3;
 std::vector<float> vertex_normals(const std::vector<float>& positions,
                                   const std::vector<uint32_t>& triangles);
 

@@ -106,5 +106,18 @@ printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n' >"$out/bad-index.off"
 "$bin" "$out/bad-index.off" "$out/never.ply" >"$out/o" 2>"$out/e"; code=$?
 [ "$code" -ne 0 ] && [ ! -e "$out/never.ply" ] && ok || fail "out-of-range index in a file accepted (exit $code)"
 
+# Malformed OFF files that crashed vcglib's importer (found by the sweep): a blank line among
+# the vertices (CGAL's prim.off) reads; a count far beyond the file is refused, no allocation.
+printf 'OFF\n4 2 0\n0 0 0\n1 0 0\n  \n0 1 0\n1 1 0.5\n3 0 1 2\n3 1 3 2\n' >"$out/blank-line.off"
+"$bin" "$out/blank-line.off" "$out/blank-line.ply" --faces 1 >/dev/null 2>"$out/e" && [ -s "$out/blank-line.ply" ] && ok ||
+  fail "OFF with a blank line: $(cat "$out/e")"
+printf 'OFF\n353535235358 6 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n' >"$out/huge-count.off"
+expect_exit 3 "declares 353535235358 vertices" "$bin" "$out/huge-count.off" "$out/never.ply"
+printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n4 0 1 2\n' >"$out/short-face.off"
+expect_exit 3 "fewer corners" "$bin" "$out/short-face.off" "$out/never.ply"
+printf 'COFF\n3 1 0\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n0 1 0 0 0 255 255\n3 0 1 2\n' >"$out/colored.off"
+"$bin" "$out/colored.off" "$out/colored-off.ply" --ascii >/dev/null 2>&1 && grep -q "^0 1 0 0 0 255 255" "$out/colored-off.ply" && ok ||
+  fail "COFF colours not kept: $(grep -A3 end_header "$out/colored-off.ply" 2>&1 | head -4)"
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

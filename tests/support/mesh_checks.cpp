@@ -132,9 +132,11 @@ size_t count_flipped(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Repor
   for (size_t i = 0; i < in.triangles.size(); i += 3) {
     V3 x = cross(sub(pos(in, in.triangles[i + 1]), pos(in, in.triangles[i])),
                  sub(pos(in, in.triangles[i + 2]), pos(in, in.triangles[i])));
+    double l = std::sqrt(dot(x, x));
+    if (!(l > 0) || !std::isfinite(l)) continue;
     for (int c = 0; c < 3; ++c) {
       V3& n = normal[in.triangles[i + c]];
-      n = {n.x + x.x, n.y + x.y, n.z + x.z};
+      n = {n.x + x.x / l, n.y + x.y / l, n.z + x.z / l};
     }
   }
   std::vector<uint32_t> old_of(out.vertex_count());
@@ -148,7 +150,8 @@ size_t count_flipped(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Repor
     for (int c = 0; c < 3; ++c) {
       V3 n = normal[old_of[out.triangles[i + c]]];
       double l = std::sqrt(dot(n, n));
-      if (l > 0) s = {s.x + n.x / l, s.y + n.y / l, s.z + n.z / l};
+      // As the core: a sum this short is faces cancelling, no normal.
+      if (l > 1e-3) s = {s.x + n.x / l, s.y + n.y / l, s.z + n.z / l};
     }
     flipped += dot(x, s) < 0;
   }
@@ -164,6 +167,156 @@ size_t count_duplicate_directed_edges(const vrs::Mesh& m) {
       dup += ++c[k] > 1;
     }
   return dup;
+}
+
+bool same_bits(const vrs::Mesh& a, const vrs::Mesh& b) {
+  if (a.triangles != b.triangles || a.positions.size() != b.positions.size()) return false;
+  return a.positions.empty() || std::memcmp(a.positions.data(), b.positions.data(),
+                                            a.positions.size() * sizeof(float)) == 0;
+}
+
+size_t count_flipped_new(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Report& r) {
+  std::vector<V3> normal(in.vertex_count(), V3{0, 0, 0});
+  for (size_t i = 0; i < in.triangles.size(); i += 3) {
+    V3 x = cross(sub(pos(in, in.triangles[i + 1]), pos(in, in.triangles[i])),
+                 sub(pos(in, in.triangles[i + 2]), pos(in, in.triangles[i])));
+    // Unit face normals summed, as the core's vertex normals.
+    double l = std::sqrt(dot(x, x));
+    if (!(l > 0) || !std::isfinite(l)) continue;
+    for (int c = 0; c < 3; ++c) {
+      V3& n = normal[in.triangles[i + c]];
+      n = {n.x + x.x / l, n.y + x.y / l, n.z + x.z / l};
+    }
+  }
+  std::vector<uint32_t> old_of(out.vertex_count());
+  for (size_t v = 0; v < r.remap.size(); ++v)
+    if (r.remap[v] != vrs::kRemoved) old_of[r.remap[v]] = uint32_t(v);
+  size_t flipped = 0;
+  for (size_t f = 0; f < out.face_count(); ++f) {
+    if (r.face_source[f] != vrs::kRemoved) continue;
+    const uint32_t* t = &out.triangles[3 * f];
+    V3 x = cross(sub(pos(out, t[1]), pos(out, t[0])), sub(pos(out, t[2]), pos(out, t[0])));
+    V3 s{0, 0, 0};
+    for (int c = 0; c < 3; ++c) {
+      V3 n = normal[old_of[t[c]]];
+      double l = std::sqrt(dot(n, n));
+      // As the core: a sum this short is faces cancelling, no normal.
+      if (l > 1e-3) s = {s.x + n.x / l, s.y + n.y / l, s.z + n.z / l};
+    }
+    // Clearly opposed: beyond rounding (the core decides in its own precision).
+    flipped += dot(x, s) < -1e-6 * std::sqrt(dot(x, x)) * std::sqrt(dot(s, s));
+  }
+  return flipped;
+}
+
+std::vector<long> component_euler(const vrs::Mesh& m) {
+  const size_t n = m.vertex_count();
+  std::vector<uint32_t> parent(n);
+  for (size_t v = 0; v < n; ++v)
+    parent[v] = uint32_t(v);
+  auto find = [&](uint32_t v) {
+    while (parent[v] != v)
+      v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for (size_t i = 0; i < m.triangles.size(); i += 3)
+    for (int c = 1; c < 3; ++c)
+      parent[find(m.triangles[i + c])] = find(m.triangles[i]);
+  std::unordered_map<uint32_t, long> chi;
+  std::vector<char> used(n, 0);
+  for (uint32_t v : m.triangles)
+    if (!used[v]) used[v] = 1, ++chi[find(v)];
+  for (auto& [k, c] : edge_counts(m))
+    --chi[find(uint32_t(k >> 32))];
+  for (size_t i = 0; i < m.triangles.size(); i += 3)
+    ++chi[find(m.triangles[i])];
+  std::vector<long> out;
+  for (auto& [root, c] : chi)
+    out.push_back(c);
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+vrs::Mesh without_repeated_corner_faces(const vrs::Mesh& m) {
+  vrs::Mesh c;
+  c.positions = m.positions;
+  for (size_t i = 0; i < m.triangles.size(); i += 3) {
+    uint32_t a = m.triangles[i], b = m.triangles[i + 1], d = m.triangles[i + 2];
+    if (a != b && b != d && a != d) c.triangles.insert(c.triangles.end(), {a, b, d});
+  }
+  return c;
+}
+
+std::string check_run(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Options& o,
+                      const vrs::Report& r) {
+  if (!r.ok) {
+    if (r.message.empty()) return "refused without a message";
+    if (!same_bits(out, in)) return "refused but the mesh changed";
+    return {};
+  }
+  std::string e = check_valid(in, out, r);
+  if (!e.empty()) return e;
+  if (r.faces != out.face_count() || r.vertices != out.vertex_count())
+    return "report counts differ from the mesh";
+  const vrs::Mesh clean = without_repeated_corner_faces(in);
+  const EdgeStats before = edge_stats(clean), after = edge_stats(out);
+  if (after.boundary > before.boundary) return "new boundary edges";
+  if (!o.simplify_boundary) {
+    e = check_boundary_kept(clean, out, r);
+    if (!e.empty()) return e;
+  }
+  if (count_degenerate(out) > count_degenerate(clean)) return "new degenerate faces";
+  if (size_t f = count_flipped_new(clean, out, r))
+    return std::to_string(f) + " new faces flipped against the input surface";
+  if (component_euler(out) != component_euler(clean))
+    return "a component's Euler characteristic changed";
+
+  const vrs::TargetKind k = o.target.kind;
+  const size_t target_faces =
+      k == vrs::TargetKind::Faces ? o.target.faces
+      : k == vrs::TargetKind::Ratio
+          ? size_t(std::llround(o.target.ratio * double(clean.face_count())))
+          : 0;
+  switch (r.stop) {
+  case vrs::StopReason::TargetReached:
+    if ((k == vrs::TargetKind::Faces || k == vrs::TargetKind::Ratio) &&
+        out.face_count() > target_faces)
+      return "target_reached with " + std::to_string(out.face_count()) + " faces for " +
+             std::to_string(target_faces);
+    if (k == vrs::TargetKind::Vertices && after.referenced_vertices > o.target.vertices)
+      return "target_reached above the vertex target";
+    if (k == vrs::TargetKind::MaxFactor || k == vrs::TargetKind::Auto)
+      return "target_reached for a target kind that has no count";
+    break;
+  case vrs::StopReason::MaxFactor:
+    if (k != vrs::TargetKind::MaxFactor) return "max_factor stop without that target";
+    // The report keeps priorities in float: allow its rounding.
+    if (r.max_removed_factor > o.target.max_factor * (1 + 1e-6) + 1e-30)
+      return "removed a vertex above max_factor";
+    break;
+  case vrs::StopReason::LastInterval:
+    if (k != vrs::TargetKind::Auto) return "last_interval stop without the auto target";
+    break;
+  case vrs::StopReason::NoCandidates:
+    if (k == vrs::TargetKind::Faces || k == vrs::TargetKind::Ratio) {
+      if (out.face_count() <= target_faces) return "no_candidates but the target was met";
+    } else if (k == vrs::TargetKind::Vertices) {
+      if (after.referenced_vertices <= o.target.vertices)
+        return "no_candidates but the target was met";
+    } else {
+      return "no_candidates for a target kind without a count";
+    }
+    break;
+  case vrs::StopReason::Cancelled:
+    if (!o.progress) return "cancelled without a progress callback";
+    break;
+  case vrs::StopReason::InvalidInput: return "ok report with stop invalid_input";
+  }
+  const bool reached = r.stop == vrs::StopReason::TargetReached ||
+                       r.stop == vrs::StopReason::MaxFactor ||
+                       r.stop == vrs::StopReason::LastInterval;
+  if (r.target_reached != reached) return "target_reached disagrees with the stop reason";
+  return {};
 }
 
 } // namespace vrs_test

@@ -2,6 +2,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "vrs/simplify.h"
 
@@ -28,9 +29,29 @@ std::string check_indices(const vrs::Mesh& m);
 std::string check_boundary_kept(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Report& r);
 // Triangles of quality < q (1 = equilateral).
 size_t count_degenerate(const vrs::Mesh& m, double q = 1e-3);
-// Output triangles whose normal opposes the input's area-weighted vertex normals at its corners.
+// Output triangles whose normal opposes the input's vertex normals (sums of unit face normals)
+// at its corners.
 size_t count_flipped(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Report& r);
 // Each directed edge used at most once (consistent orientation).
 size_t count_duplicate_directed_edges(const vrs::Mesh& m);
+
+// Output triangles made by the re-triangulation (face_source kRemoved) that clearly oppose the
+// input's vertex normals at their corners (untouched input faces are the user's business).
+size_t count_flipped_new(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Report& r);
+// Euler characteristic V - E + F of each connected component (over referenced vertices),
+// sorted: removals must leave every component's topology as it was.
+std::vector<long> component_euler(const vrs::Mesh& m);
+// Same positions bit for bit (NaN included) and same triangles.
+bool same_bits(const vrs::Mesh& a, const vrs::Mesh& b);
+// The input without faces that repeat a corner (the core drops them first).
+vrs::Mesh without_repeated_corner_faces(const vrs::Mesh& m);
+
+// Every invariant of one run, for any input (the fuzzer's and the sweep's): a refusal leaves
+// the mesh as given and says why; otherwise valid indices, a vertex subset, no new non-manifold
+// or boundary edges, no new degenerate faces, no flipped new faces, each component's Euler
+// characteristic unchanged, the boundary kept unless asked otherwise, the report's counts
+// true, and the target reached or the stop reason consistent with it. "" when all hold.
+std::string check_run(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Options& o,
+                      const vrs::Report& r);
 
 } // namespace vrs_test

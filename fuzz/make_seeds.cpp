@@ -1,0 +1,49 @@
+// Seed corpus for the fuzzer: real meshes (OFF) encoded in its input format, each under a few
+// option sets (targets, modes, queue, priority, boundary, locks, cancel).
+//   vrs_fuzz_seeds OUT_DIR MESH.off...
+#include <cstdio>
+#include <fstream>
+#include <string>
+
+#include "fuzz_case.h"
+#include "test_meshes.h"
+
+int main(int argc, char** argv) {
+  if (argc < 3) {
+    std::fprintf(stderr, "usage: vrs_fuzz_seeds OUT_DIR MESH.off...\n");
+    return 2;
+  }
+  const std::string out = argv[1];
+  struct Variant {
+    uint8_t f0, f1;
+    uint32_t param;
+  };
+  // f0: target kind | mode << 3 | heap 0x20 | log 0x40 | boundary 0x80;
+  // f1: factor 1 | raw 2 | locks 4 | cancel 8.
+  const Variant variants[] = {
+      {2, 0, 0x19999999u},        // ratio 10 %, local error
+      {2 | 0x80, 1, 0x028f5c28u}, // ratio 1 %, boundary too, paper's factor
+      {4 | 0x40, 0, 0},           // auto, log mapping
+      {0 | 0x20, 4, 40},          // faces, heap, locks
+      {3 | (1 << 3), 8, 500},     // max factor, terrain, cancel
+  };
+  int written = 0;
+  for (int i = 2; i < argc; ++i) {
+    vrs::Mesh m = vrs_test::read_off(argv[i]);
+    if (m.vertex_count() == 0 || m.vertex_count() > 65535) {
+      std::fprintf(stderr, "skipped %s\n", argv[i]);
+      continue;
+    }
+    std::string base = argv[i];
+    base = base.substr(base.find_last_of('/') + 1);
+    int k = 0;
+    for (const Variant& v : variants) {
+      auto bytes = vrs_test::encode_fuzz_case(m, v.f0, v.f1, 1000, v.param);
+      std::ofstream(out + "/" + base + "." + std::to_string(k++), std::ios::binary)
+          .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+      ++written;
+    }
+  }
+  std::printf("%d seeds in %s\n", written, out.c_str());
+  return written > 0 ? 0 : 1;
+}

@@ -1,0 +1,130 @@
+#include "fuzz_case.h"
+
+#include <cstring>
+
+#include "mesh_checks.h"
+
+namespace vrs_test {
+
+namespace {
+
+class Bytes {
+ public:
+  Bytes(const uint8_t* d, size_t n) : d_(d), n_(n) {}
+  size_t left() const { return n_ - i_; }
+  uint8_t u8() { return i_ < n_ ? d_[i_++] : 0; }
+  uint16_t u16() { return uint16_t(u8() | (u8() << 8)); }
+  uint32_t u32() { return uint32_t(u16()) | (uint32_t(u16()) << 16); }
+  float f32() {
+    uint32_t b = u32();
+    float f;
+    std::memcpy(&f, &b, 4);
+    return f;
+  }
+
+ private:
+  const uint8_t* d_;
+  size_t n_, i_ = 0;
+};
+
+void put16(std::vector<uint8_t>& b, uint16_t v) {
+  b.push_back(uint8_t(v));
+  b.push_back(uint8_t(v >> 8));
+}
+void put32(std::vector<uint8_t>& b, uint32_t v) {
+  put16(b, uint16_t(v));
+  put16(b, uint16_t(v >> 16));
+}
+
+} // namespace
+
+FuzzCase decode_fuzz_case(const uint8_t* data, size_t size) {
+  Bytes in(data, size);
+  FuzzCase c;
+  vrs::Options& o = c.options;
+  const uint8_t f0 = in.u8(), f1 = in.u8();
+  o.target.kind = vrs::TargetKind((f0 & 7) % 5);
+  o.mode = vrs::Mode(((f0 >> 3) & 3) % 3);
+  o.queue = f0 & 0x20 ? vrs::QueueKind::Heap : vrs::QueueKind::Intervals;
+  o.mapping = f0 & 0x40 ? vrs::IntervalMapping::Logarithmic : vrs::IntervalMapping::Linear;
+  o.simplify_boundary = f0 & 0x80;
+  o.priority = f1 & 1 ? vrs::Priority::Factor : vrs::Priority::LocalError;
+  const bool raw_indices = f1 & 2, locks = f1 & 4, cancel = f1 & 8, unchecked = f1 & 16;
+
+  const uint16_t intervals = in.u16();
+  const uint8_t valence = in.u8();
+  const uint32_t param = in.u32();
+  const uint8_t cancel_after = in.u8(), lock_stride = in.u8();
+  // Options: in range unless `unchecked` (then the core must refuse cleanly).
+  o.intervals = unchecked ? int(int16_t(intervals)) : 2 + intervals % 2000;
+  o.max_valence = unchecked ? int(int8_t(valence)) : 3 + valence % 62;
+  float raw_param;
+  std::memcpy(&raw_param, &param, 4);
+  o.target.ratio = unchecked ? double(raw_param) : double(param) / 4294967295.0;
+  o.target.max_factor = unchecked ? double(raw_param) : double(param % 100000) * 1e-5;
+  if (cancel) c.cancel_after = 1 + cancel_after % 16;
+
+  const size_t n = std::min<size_t>(in.u16(), in.left() / 12);
+  c.mesh.positions.resize(3 * n);
+  for (float& x : c.mesh.positions)
+    x = in.f32();
+  while (in.left() >= 6) {
+    for (int k = 0; k < 3; ++k) {
+      uint32_t i = in.u16();
+      c.mesh.triangles.push_back(raw_indices ? i : uint32_t(i % (n + 1)));
+    }
+  }
+  const size_t faces = c.mesh.face_count();
+  o.target.faces = param % (faces + 2);
+  o.target.vertices = param % (n + 2);
+  if (locks) {
+    c.locks.assign(n, 0);
+    for (size_t v = 0; v < n; v += 1 + lock_stride % 7)
+      c.locks[v] = 1;
+  }
+  return c;
+}
+
+std::vector<uint8_t> encode_fuzz_case(const vrs::Mesh& m, uint8_t flags0, uint8_t flags1,
+                                      uint16_t intervals, uint32_t target_param) {
+  std::vector<uint8_t> b{flags0, flags1};
+  put16(b, intervals);
+  b.push_back(29); // max valence 32
+  put32(b, target_param);
+  b.push_back(3); // cancel after 4 calls, when asked
+  b.push_back(2); // lock every third vertex, when asked
+  put16(b, uint16_t(m.vertex_count()));
+  for (float x : m.positions) {
+    uint32_t u;
+    std::memcpy(&u, &x, 4);
+    put32(b, u);
+  }
+  for (uint32_t i : m.triangles)
+    put16(b, uint16_t(i));
+  return b;
+}
+
+std::string run_fuzz_case(const uint8_t* data, size_t size) {
+  FuzzCase c = decode_fuzz_case(data, size);
+  if (!c.locks.empty()) c.options.locked = &c.locks;
+  vrs::Mesh out[2] = {c.mesh, c.mesh};
+  vrs::Report rep[2];
+  bool progress_out_of_range = false;
+  for (int run = 0; run < 2; ++run) {
+    int calls = 0;
+    if (c.cancel_after > 0)
+      c.options.progress = [&](float f) {
+        progress_out_of_range |= !(f >= 0 && f <= 1);
+        return ++calls < c.cancel_after;
+      };
+    rep[run] = vrs::simplify(out[run], c.options);
+  }
+  if (progress_out_of_range) return "progress reported outside [0, 1]";
+  std::string e = check_run(c.mesh, out[0], c.options, rep[0]);
+  if (!e.empty()) return e;
+  if (!same_bits(out[0], out[1]) || rep[0].stop != rep[1].stop)
+    return "two runs on the same input differ";
+  return {};
+}
+
+} // namespace vrs_test
