@@ -23,15 +23,16 @@ echo
 awk -F, 'NR > 1 && ($5 == "ours" || $5 == "qecd" || $5 == "meshopt" || $5 == "vtk") {
     k = $1 "," $3; f[k, $5] = $6; t[k, $5] = $8; mx[k, $5] = $11; mn[k, $5] = $12; mem[k, $5] = $9
     if (!(k in seen)) { seen[k] = 1; order[++n] = k } }
+  function v(x, fmt) { return x > 0 ? sprintf(fmt, x) : "—" }
   END {
     print "| mesh | ratio | faces (ours/QECD/meshopt/vtk) | time s (ours/QECD/meshopt/vtk) | max err % (ours/QECD/meshopt/vtk) | mean err % (ours/QECD/meshopt/vtk) |"
     print "|---|---|---|---|---|---|"
     for (i = 1; i <= n; i++) { k = order[i]; split(k, p, ",")
-      printf "| %s | %s | %s / %s / %s / %s | %.3f / %.3f / %.3f / %.3f | %.3f / %.3f / %.3f / %.3f | %.4f / %.4f / %.4f / %.4f |\n",
-        p[1], p[2], f[k,"ours"], f[k,"qecd"], f[k,"meshopt"], f[k,"vtk"],
-        t[k,"ours"], t[k,"qecd"], t[k,"meshopt"], t[k,"vtk"],
-        100*mx[k,"ours"], 100*mx[k,"qecd"], 100*mx[k,"meshopt"], 100*mx[k,"vtk"],
-        100*mn[k,"ours"], 100*mn[k,"qecd"], 100*mn[k,"meshopt"], 100*mn[k,"vtk"] }
+      printf "| %s | %s | %s / %s / %s / %s | %s / %s / %s / %s | %s / %s / %s / %s | %s / %s / %s / %s |\n",
+        p[1], p[2], v(f[k,"ours"], "%d"), v(f[k,"qecd"], "%d"), v(f[k,"meshopt"], "%d"), v(f[k,"vtk"], "%d"),
+        v(t[k,"ours"], "%.3f"), v(t[k,"qecd"], "%.3f"), v(t[k,"meshopt"], "%.3f"), v(t[k,"vtk"], "%.3f"),
+        v(100*mx[k,"ours"], "%.3f"), v(100*mx[k,"qecd"], "%.3f"), v(100*mx[k,"meshopt"], "%.3f"), v(100*mx[k,"vtk"], "%.3f"),
+        v(100*mn[k,"ours"], "%.4f"), v(100*mn[k,"qecd"], "%.4f"), v(100*mn[k,"meshopt"], "%.4f"), v(100*mn[k,"vtk"], "%.4f") }
     # The error targets are over the real meshes at their three ratios (not the scaling inputs).
     lm = lx = lt = lq = lmem = 0; c = ct = cq = 0
     for (i = 1; i <= n; i++) { k = order[i]; split(k, p, ",")
