@@ -39,6 +39,42 @@ double dot(V3 a, V3 b) {
   return a.x * b.x + a.y * b.y + a.z * b.z;
 }
 
+// Output faces (all, or only those the re-triangulation made) whose normal opposes the input's
+// vertex normals at their corners: dot < -tolerance * |face normal| * |normal sum|.
+size_t flipped_faces(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Report& r, bool new_only,
+                     double tolerance) {
+  // Unit face normals summed, as the core's vertex normals.
+  std::vector<V3> normal(in.vertex_count(), V3{0, 0, 0});
+  for (size_t i = 0; i < in.triangles.size(); i += 3) {
+    V3 x = cross(sub(pos(in, in.triangles[i + 1]), pos(in, in.triangles[i])),
+                 sub(pos(in, in.triangles[i + 2]), pos(in, in.triangles[i])));
+    double l = std::sqrt(dot(x, x));
+    if (!(l > 0) || !std::isfinite(l)) continue;
+    for (int c = 0; c < 3; ++c) {
+      V3& n = normal[in.triangles[i + c]];
+      n = {n.x + x.x / l, n.y + x.y / l, n.z + x.z / l};
+    }
+  }
+  std::vector<uint32_t> old_of(out.vertex_count());
+  for (size_t v = 0; v < r.remap.size(); ++v)
+    if (r.remap[v] != vrs::kRemoved) old_of[r.remap[v]] = uint32_t(v);
+  size_t flipped = 0;
+  for (size_t f = 0; f < out.face_count(); ++f) {
+    if (new_only && r.face_source[f] != vrs::kRemoved) continue;
+    const uint32_t* t = &out.triangles[3 * f];
+    V3 x = cross(sub(pos(out, t[1]), pos(out, t[0])), sub(pos(out, t[2]), pos(out, t[0])));
+    V3 s{0, 0, 0};
+    for (int c = 0; c < 3; ++c) {
+      V3 n = normal[old_of[t[c]]];
+      double l = std::sqrt(dot(n, n));
+      // As the core: a sum this short is faces cancelling, no normal.
+      if (l > 1e-3) s = {s.x + n.x / l, s.y + n.y / l, s.z + n.z / l};
+    }
+    flipped += dot(x, s) < -tolerance * std::sqrt(dot(x, x)) * std::sqrt(dot(s, s));
+  }
+  return flipped;
+}
+
 } // namespace
 
 long EdgeStats::euler() const {
@@ -128,34 +164,7 @@ size_t count_degenerate(const vrs::Mesh& m, double q) {
 }
 
 size_t count_flipped(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Report& r) {
-  std::vector<V3> normal(in.vertex_count(), V3{0, 0, 0});
-  for (size_t i = 0; i < in.triangles.size(); i += 3) {
-    V3 x = cross(sub(pos(in, in.triangles[i + 1]), pos(in, in.triangles[i])),
-                 sub(pos(in, in.triangles[i + 2]), pos(in, in.triangles[i])));
-    double l = std::sqrt(dot(x, x));
-    if (!(l > 0) || !std::isfinite(l)) continue;
-    for (int c = 0; c < 3; ++c) {
-      V3& n = normal[in.triangles[i + c]];
-      n = {n.x + x.x / l, n.y + x.y / l, n.z + x.z / l};
-    }
-  }
-  std::vector<uint32_t> old_of(out.vertex_count());
-  for (size_t v = 0; v < r.remap.size(); ++v)
-    if (r.remap[v] != vrs::kRemoved) old_of[r.remap[v]] = uint32_t(v);
-  size_t flipped = 0;
-  for (size_t i = 0; i < out.triangles.size(); i += 3) {
-    V3 x = cross(sub(pos(out, out.triangles[i + 1]), pos(out, out.triangles[i])),
-                 sub(pos(out, out.triangles[i + 2]), pos(out, out.triangles[i])));
-    V3 s{0, 0, 0};
-    for (int c = 0; c < 3; ++c) {
-      V3 n = normal[old_of[out.triangles[i + c]]];
-      double l = std::sqrt(dot(n, n));
-      // As the core: a sum this short is faces cancelling, no normal.
-      if (l > 1e-3) s = {s.x + n.x / l, s.y + n.y / l, s.z + n.z / l};
-    }
-    flipped += dot(x, s) < 0;
-  }
-  return flipped;
+  return flipped_faces(in, out, r, /*new_only=*/false, /*tolerance=*/0);
 }
 
 size_t count_duplicate_directed_edges(const vrs::Mesh& m) {
@@ -176,37 +185,8 @@ bool same_bits(const vrs::Mesh& a, const vrs::Mesh& b) {
 }
 
 size_t count_flipped_new(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Report& r) {
-  std::vector<V3> normal(in.vertex_count(), V3{0, 0, 0});
-  for (size_t i = 0; i < in.triangles.size(); i += 3) {
-    V3 x = cross(sub(pos(in, in.triangles[i + 1]), pos(in, in.triangles[i])),
-                 sub(pos(in, in.triangles[i + 2]), pos(in, in.triangles[i])));
-    // Unit face normals summed, as the core's vertex normals.
-    double l = std::sqrt(dot(x, x));
-    if (!(l > 0) || !std::isfinite(l)) continue;
-    for (int c = 0; c < 3; ++c) {
-      V3& n = normal[in.triangles[i + c]];
-      n = {n.x + x.x / l, n.y + x.y / l, n.z + x.z / l};
-    }
-  }
-  std::vector<uint32_t> old_of(out.vertex_count());
-  for (size_t v = 0; v < r.remap.size(); ++v)
-    if (r.remap[v] != vrs::kRemoved) old_of[r.remap[v]] = uint32_t(v);
-  size_t flipped = 0;
-  for (size_t f = 0; f < out.face_count(); ++f) {
-    if (r.face_source[f] != vrs::kRemoved) continue;
-    const uint32_t* t = &out.triangles[3 * f];
-    V3 x = cross(sub(pos(out, t[1]), pos(out, t[0])), sub(pos(out, t[2]), pos(out, t[0])));
-    V3 s{0, 0, 0};
-    for (int c = 0; c < 3; ++c) {
-      V3 n = normal[old_of[t[c]]];
-      double l = std::sqrt(dot(n, n));
-      // As the core: a sum this short is faces cancelling, no normal.
-      if (l > 1e-3) s = {s.x + n.x / l, s.y + n.y / l, s.z + n.z / l};
-    }
-    // Clearly opposed: beyond rounding (the core decides in its own precision).
-    flipped += dot(x, s) < -1e-6 * std::sqrt(dot(x, x)) * std::sqrt(dot(s, s));
-  }
-  return flipped;
+  // Clearly opposed only: beyond rounding (the core decides in its own precision).
+  return flipped_faces(in, out, r, /*new_only=*/true, /*tolerance=*/1e-6);
 }
 
 std::vector<long> component_euler(const vrs::Mesh& m) {
