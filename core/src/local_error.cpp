@@ -36,9 +36,9 @@ double patch_error(uint32_t v, const Ring& ring, const Patch& patch, const Evalu
                    double reference_area) {
   const int k = ring.verts;
   const Vec3 c = eval.position(v);
-  std::array<Vec3, kMaxRing + 1> q;
-  for (int i = 0; i < k; ++i)
-    q[i] = eval.position(ring.v[i]);
+  const auto& q = patch.q; // as planned: positions, and their projections `p` on (u, w)
+  const auto& p = patch.p;
+  const Vec3 u = patch.u, w = patch.w;
   // Unit normals of the old fan's triangles, for the plane-distance lower bound that skips
   // most exact point-triangle queries; their lengths give the fan's area.
   std::array<Vec3, kMaxRing> old_n;
@@ -55,11 +55,6 @@ double patch_error(uint32_t v, const Ring& ring, const Patch& patch, const Evalu
   // The old fan projects without folds along the patch's normal, so a point of the new patch
   // lies over one old triangle: measure to it and its two neighbours (to all of them if
   // rounding says it lies over none).
-  Vec3 u, w;
-  plane_basis(patch.normal, u, w);
-  std::array<Vec2, kMaxRing + 1> p;
-  for (int i = 0; i < k; ++i)
-    p[i] = {dot(q[i] - c, u), dot(q[i] - c, w)};
   const Vec2 o{0, 0};
   auto to_old_fan = [&](Vec3 x) {
     Vec2 s{dot(x - c, u), dot(x - c, w)};

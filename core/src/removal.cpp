@@ -50,11 +50,12 @@ Reject plan_removal(uint32_t v, const Ring& ring, Vec3 n, const Evaluator& eval,
                     const RemovalLimits& limits, Patch& out, bool check_topology) {
   const int k = ring.verts;
   if (k < 3) return RejectFold;
-  Vec3 u, w;
+  Vec3& u = out.u;
+  Vec3& w = out.w;
   plane_basis(n, u, w);
   const Vec3 c = eval.position(v);
-  std::array<Vec3, kMaxRing + 1> q;
-  std::array<Vec2, kMaxRing + 1> p;
+  auto& q = out.q; // the plan keeps them for patch_error
+  auto& p = out.p;
   for (int i = 0; i < k; ++i) {
     q[i] = eval.position(ring.v[i]);
     Vec3 d = q[i] - c;

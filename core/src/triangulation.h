@@ -12,8 +12,13 @@ namespace vrs {
 
 struct Patch {
   int count = 0;
-  Vec3 normal;                                      // the direction the ring was projected along
   std::array<std::array<uint8_t, 3>, kMaxRing> tri; // indices into the ring, counter-clockwise
+  // The ring as it was planned (filled by plan_removal, read by patch_error): the direction
+  // it was projected along with its plane basis (u, w), the ring's 3D positions and their
+  // projections relative to the removed vertex.
+  Vec3 normal, u, w;
+  std::array<Vec3, kMaxRing + 1> q;
+  std::array<Vec2, kMaxRing + 1> p;
 };
 
 bool is_convex(const Vec2* p, int k);
