@@ -6,25 +6,26 @@ mlx_begin() { printf '<!DOCTYPE FilterScript>\n<FilterScript>\n'; }
 mlx_end() { printf '</FilterScript>\n'; }
 
 # _mlx_filter NAME "TYPE NAME DEFAULT"... -- OVERRIDES...
+# An enum declares its labels after the default: "RichEnum NAME DEFAULT LABEL0|LABEL1|...".
 _mlx_filter() {
   local filter=$1; shift
   local -a decl=()
   while [ $# -gt 0 ] && [ "$1" != -- ]; do decl+=("$1"); shift; done
   [ "${1:-}" = -- ] && shift
   printf ' <filter name="%s">\n' "$filter"
-  local d type name value kv
+  local d type name value labels kv i
+  local -a label
   for d in "${decl[@]}"; do
-    read -r type name value <<<"$d"
+    read -r type name value labels <<<"$d"
     for kv in "$@"; do [ "${kv%%=*}" = "$name" ] && value=${kv#*=}; done
     # XML escapes (the \& keeps bash 5.2 from reading & as "the match")
     value=${value//&/\&amp;} value=${value//</\&lt;} value=${value//>/\&gt;} value=${value//\"/\&quot;}
     case $type in
     RichEnum)
-      if [ "$name" = Priority ]; then
-        printf '  <Param type="RichEnum" name="%s" value="%s" enum_cardinality="2" enum_val0="Local error of the new patch" enum_val1="Evaluation factor (paper)"/>\n' "$name" "$value"
-      else
-        printf '  <Param type="RichEnum" name="%s" value="%s" enum_cardinality="3" enum_val0="3D surface (average plane)" enum_val1="2.5D terrain (XY plane)" enum_val2="2D planar mesh"/>\n' "$name" "$value"
-      fi ;;
+      IFS='|' read -r -a label <<<"$labels"
+      printf '  <Param type="RichEnum" name="%s" value="%s" enum_cardinality="%d"' "$name" "$value" "${#label[@]}"
+      for i in "${!label[@]}"; do printf ' enum_val%d="%s"' "$i" "${label[$i]}"; done
+      printf '/>\n' ;;
     RichAbsPerc) printf '  <Param type="RichAbsPerc" name="%s" value="%s" min="0" max="%s"/>\n' "$name" "$value" "$value" ;;
     *) printf '  <Param type="%s" name="%s" value="%s"/>\n' "$type" "$name" "$value" ;;
     esac
@@ -36,8 +37,9 @@ _mlx_filter() {
 mlx_vertex_removal() {
   _mlx_filter "Simplification: Vertex Removal Decimation" \
     "RichInt TargetFaceNum 0" "RichFloat TargetPerc 0" "RichInt TargetVertNum 0" \
-    "RichFloat MaxFactor 0" "RichBool AutoStop false" "RichEnum Mode 0" "RichEnum Priority 0" \
-    "RichInt Intervals 1000" \
+    "RichFloat MaxFactor 0" "RichBool AutoStop false" \
+    "RichEnum Mode 0 3D surface (average plane)|2.5D terrain (XY plane)|2D planar mesh" \
+    "RichEnum Priority 0 Local error of the new patch|Evaluation factor (paper)" "RichInt Intervals 1000" \
     "RichBool PreserveBoundary true" "RichBool Selected false" "RichBool AutoClean true" \
     "RichInt LODLevels 1" -- "$@"
 }
