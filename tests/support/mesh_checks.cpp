@@ -299,4 +299,13 @@ std::string check_run(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Opti
   return {};
 }
 
+std::string check_rerun(const vrs::Mesh& in, const vrs::Options& o, const vrs::Mesh& first,
+                        const vrs::Report& first_report) {
+  vrs::Mesh again = in;
+  const vrs::Report r = vrs::simplify(again, o);
+  if (!same_bits(first, again) || r.stop != first_report.stop)
+    return "two runs on the same input differ";
+  return {};
+}
+
 } // namespace vrs_test

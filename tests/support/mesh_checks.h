@@ -54,4 +54,9 @@ vrs::Mesh without_repeated_corner_faces(const vrs::Mesh& m);
 std::string check_run(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Options& o,
                       const vrs::Report& r);
 
+// Determinism: simplifying `in` with `o` again must give `first` bit for bit and the same stop
+// reason as `first_report`. "" when so.
+std::string check_rerun(const vrs::Mesh& in, const vrs::Options& o, const vrs::Mesh& first,
+                        const vrs::Report& first_report);
+
 } // namespace vrs_test
