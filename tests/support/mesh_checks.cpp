@@ -81,9 +81,15 @@ long EdgeStats::euler() const {
   return long(referenced_vertices) - long(edges) + long(faces);
 }
 
-EdgeStats edge_stats(const vrs::Mesh& m) {
+namespace {
+
+using EdgeCounts = std::unordered_map<uint64_t, int>;
+
+// The checks below from edge maps built once: check_run reads each mesh's map several times
+// (a 19 M-face mesh's map takes seconds to build and gigabytes to hold).
+EdgeStats stats_of(const vrs::Mesh& m, const EdgeCounts& edges) {
   EdgeStats s;
-  for (auto& [k, n] : edge_counts(m)) {
+  for (auto& [k, n] : edges) {
     ++s.edges;
     s.boundary += n == 1;
     s.nonmanifold += n > 2;
@@ -96,15 +102,66 @@ EdgeStats edge_stats(const vrs::Mesh& m) {
   return s;
 }
 
-std::string check_valid(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Report& r) {
-  if (!r.ok) return "refused: " + r.message;
-  std::string e = check_indices(out);
-  if (e.empty()) e = check_subset(in, out, r);
-  if (e.empty() && edge_stats(out).nonmanifold > edge_stats(in).nonmanifold)
-    e = "new non-manifold edges";
+std::string boundary_kept(const EdgeCounts& before, const EdgeCounts& after, const vrs::Report& r) {
+  for (auto& [k, n] : before) {
+    if (n != 1) continue;
+    uint32_t a = r.remap[k >> 32], b = r.remap[k & 0xffffffffu];
+    if (a == vrs::kRemoved || b == vrs::kRemoved) return "a boundary vertex was removed";
+    auto it = after.find(key(a, b));
+    if (it == after.end() || it->second != 1) return "a boundary edge was lost";
+  }
+  return {};
+}
+
+std::vector<long> euler_of(const vrs::Mesh& m, const EdgeCounts& edges) {
+  const size_t n = m.vertex_count();
+  std::vector<uint32_t> parent(n);
+  for (size_t v = 0; v < n; ++v)
+    parent[v] = uint32_t(v);
+  auto find = [&](uint32_t v) {
+    while (parent[v] != v)
+      v = parent[v] = parent[parent[v]];
+    return v;
+  };
+  for (size_t i = 0; i < m.triangles.size(); i += 3)
+    for (int c = 1; c < 3; ++c)
+      parent[find(m.triangles[i + c])] = find(m.triangles[i]);
+  std::unordered_map<uint32_t, long> chi;
+  std::vector<char> used(n, 0);
+  for (uint32_t v : m.triangles)
+    if (!used[v]) used[v] = 1, ++chi[find(v)];
+  for (auto& [k, c] : edges)
+    --chi[find(uint32_t(k >> 32))];
+  for (size_t i = 0; i < m.triangles.size(); i += 3)
+    ++chi[find(m.triangles[i])];
+  std::vector<long> out;
+  for (auto& [root, c] : chi)
+    out.push_back(c);
+  std::sort(out.begin(), out.end());
+  return out;
+}
+
+// check_valid past the index check, with the non-manifold counts already known.
+std::string valid_given(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Report& r,
+                        size_t in_nonmanifold, size_t out_nonmanifold) {
+  std::string e = check_subset(in, out, r);
+  if (e.empty() && out_nonmanifold > in_nonmanifold) e = "new non-manifold edges";
   if (e.empty() && count_duplicate_directed_edges(out) > count_duplicate_directed_edges(in))
     e = "new repeated directed edges (orientation broken)";
   return e;
+}
+
+} // namespace
+
+EdgeStats edge_stats(const vrs::Mesh& m) {
+  return stats_of(m, edge_counts(m));
+}
+
+std::string check_valid(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Report& r) {
+  if (!r.ok) return "refused: " + r.message;
+  std::string e = check_indices(out);
+  if (!e.empty()) return e;
+  return valid_given(in, out, r, edge_stats(in).nonmanifold, edge_stats(out).nonmanifold);
 }
 
 std::string check_subset(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Report& r) {
@@ -140,15 +197,7 @@ std::string check_indices(const vrs::Mesh& m) {
 }
 
 std::string check_boundary_kept(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Report& r) {
-  auto before = edge_counts(in), after = edge_counts(out);
-  for (auto& [k, n] : before) {
-    if (n != 1) continue;
-    uint32_t a = r.remap[k >> 32], b = r.remap[k & 0xffffffffu];
-    if (a == vrs::kRemoved || b == vrs::kRemoved) return "a boundary vertex was removed";
-    auto it = after.find(key(a, b));
-    if (it == after.end() || it->second != 1) return "a boundary edge was lost";
-  }
-  return {};
+  return boundary_kept(edge_counts(in), edge_counts(out), r);
 }
 
 size_t count_degenerate(const vrs::Mesh& m, double q) {
@@ -190,31 +239,7 @@ size_t count_flipped_new(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::R
 }
 
 std::vector<long> component_euler(const vrs::Mesh& m) {
-  const size_t n = m.vertex_count();
-  std::vector<uint32_t> parent(n);
-  for (size_t v = 0; v < n; ++v)
-    parent[v] = uint32_t(v);
-  auto find = [&](uint32_t v) {
-    while (parent[v] != v)
-      v = parent[v] = parent[parent[v]];
-    return v;
-  };
-  for (size_t i = 0; i < m.triangles.size(); i += 3)
-    for (int c = 1; c < 3; ++c)
-      parent[find(m.triangles[i + c])] = find(m.triangles[i]);
-  std::unordered_map<uint32_t, long> chi;
-  std::vector<char> used(n, 0);
-  for (uint32_t v : m.triangles)
-    if (!used[v]) used[v] = 1, ++chi[find(v)];
-  for (auto& [k, c] : edge_counts(m))
-    --chi[find(uint32_t(k >> 32))];
-  for (size_t i = 0; i < m.triangles.size(); i += 3)
-    ++chi[find(m.triangles[i])];
-  std::vector<long> out;
-  for (auto& [root, c] : chi)
-    out.push_back(c);
-  std::sort(out.begin(), out.end());
-  return out;
+  return euler_of(m, edge_counts(m));
 }
 
 vrs::Mesh without_repeated_corner_faces(const vrs::Mesh& m) {
@@ -234,21 +259,28 @@ std::string check_run(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Opti
     if (!same_bits(out, in)) return "refused but the mesh changed";
     return {};
   }
-  std::string e = check_valid(in, out, r);
+  std::string e = check_indices(out); // before anything indexes with them
+  if (!e.empty()) return e;
+  // Each edge map once; the input's own only when it differs from the cleaned one.
+  const vrs::Mesh clean = without_repeated_corner_faces(in);
+  const EdgeCounts clean_edges = edge_counts(clean), out_edges = edge_counts(out);
+  const EdgeStats before = stats_of(clean, clean_edges), after = stats_of(out, out_edges);
+  const size_t in_nonmanifold = clean.face_count() == in.face_count()
+                                    ? before.nonmanifold
+                                    : stats_of(in, edge_counts(in)).nonmanifold;
+  e = valid_given(in, out, r, in_nonmanifold, after.nonmanifold);
   if (!e.empty()) return e;
   if (r.faces != out.face_count() || r.vertices != out.vertex_count())
     return "report counts differ from the mesh";
-  const vrs::Mesh clean = without_repeated_corner_faces(in);
-  const EdgeStats before = edge_stats(clean), after = edge_stats(out);
   if (after.boundary > before.boundary) return "new boundary edges";
   if (!o.simplify_boundary) {
-    e = check_boundary_kept(clean, out, r);
+    e = boundary_kept(clean_edges, out_edges, r);
     if (!e.empty()) return e;
   }
   if (count_degenerate(out) > count_degenerate(clean)) return "new degenerate faces";
   if (size_t f = count_flipped_new(clean, out, r))
     return std::to_string(f) + " new faces flipped against the input surface";
-  if (component_euler(out) != component_euler(clean))
+  if (euler_of(out, out_edges) != euler_of(clean, clean_edges))
     return "a component's Euler characteristic changed";
 
   const vrs::TargetKind k = o.target.kind;
