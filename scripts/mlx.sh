@@ -16,7 +16,9 @@ _mlx_filter() {
   local d type name value labels kv i
   local -a label
   for d in "${decl[@]}"; do
-    read -r type name value labels <<<"$d"
+    read -r type name value <<<"$d" # value: the rest of the line (strings hold spaces)
+    labels=
+    if [ "$type" = RichEnum ]; then labels=${value#* } value=${value%% *}; fi
     for kv in "$@"; do [ "${kv%%=*}" = "$name" ] && value=${kv#*=}; done
     # XML escapes (the \& keeps bash 5.2 from reading & as "the match")
     value=${value//&/\&amp;} value=${value//</\&lt;} value=${value//>/\&gt;} value=${value//\"/\&quot;}
