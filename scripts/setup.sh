@@ -30,8 +30,9 @@ src_list=/etc/apt/sources.list.d/vrsimplify-deb-src.sources
 need_src=0
 [ -f "$third/meshlab/vcglib/vcg/complex/complex.h" ] || need_src=1
 if [ "$need_src" -eq 1 ] && ! grep -rqs '^Types:.*deb-src\|^deb-src' /etc/apt/sources.list /etc/apt/sources.list.d/; then
-  printf 'Types: deb-src\nURIs: http://deb.debian.org/debian\nSuites: bookworm bookworm-updates\nComponents: main\nSigned-By: /usr/share/keyrings/debian-archive-keyring.gpg\n' |
-    $sudo_ tee "$src_list" >/dev/null
+  . /etc/os-release
+  printf 'Types: deb-src\nURIs: %s\nSuites: %s\nComponents: main\nSigned-By: /usr/share/keyrings/debian-archive-keyring.gpg\n' \
+    "$("$top/scripts/lib/debian_mirror.sh")" "$VERSION_CODENAME" | $sudo_ tee "$src_list" >/dev/null
   missing+=(dpkg-dev)
 fi
 if [ ${#missing[@]} -gt 0 ] || [ "$need_src" -eq 1 ] || [ ! -d "$third/cgal-data" ]; then

@@ -8,7 +8,7 @@
 #include <cstring>
 #include <limits>
 
-#include "filter_vertex_removal.h"
+#include "filter_plugin_2020.h"
 #include "test_meshes.h"
 
 namespace {

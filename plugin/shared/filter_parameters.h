@@ -3,8 +3,7 @@
 // and the core options they mean for one layer.
 #pragma once
 
-#include <common/filter_parameter/rich_parameter_list.h>
-#include <common/meshmodel.h>
+#include "meshlab_compat.h"
 
 #include <QString>
 
@@ -32,7 +31,7 @@ struct FilterSettings {
   vrs::Options options_for(int level, int faces, int vertices) const;
 };
 
-void declare_parameters(MeshModel& m, RichParameterList& par);
+void declare_parameters(const MeshModel& m, RichParameterList& par);
 
 // Fills `out` and returns "" or a message for the user naming the bad parameter.
 QString read_parameters(const RichParameterList& par, const CMeshO& m, FilterSettings& out);

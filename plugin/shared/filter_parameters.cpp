@@ -4,7 +4,7 @@
 
 namespace vrs_plugin {
 
-void declare_parameters(MeshModel& m, RichParameterList& par) {
+void declare_parameters(const MeshModel& m, RichParameterList& par) {
   const int faces = m.cm.sfn > 0 ? m.cm.sfn : m.cm.fn;
   par.addParam(RichInt("TargetFaceNum", faces / 2, "Target number of faces",
                        "The desired final number of faces (default: half of them). Used unless "

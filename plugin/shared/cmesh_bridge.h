@@ -2,7 +2,7 @@
 // simplification; it only copies, and writes a finished result back in one step.
 #pragma once
 
-#include <common/ml_mesh_type.h>
+#include "meshlab_compat.h"
 
 #include <string>
 #include <vector>

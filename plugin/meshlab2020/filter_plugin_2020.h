@@ -1,14 +1,8 @@
-// MeshLab filter "Simplification: Vertex Removal Decimation": parameters in, one call to the
-// core per level, a log line out. All geometry lives in core/.
+// MeshLab 2020.09 adapter (MeshFilterInterface; meshlabserver and the 2020.09 GUI): entry
+// points and error protocol only. The filter itself is plugin/shared/vertex_removal_filter.
 #pragma once
 
 #include <common/interfaces.h>
-
-#include <functional>
-
-namespace vrs_plugin {
-struct FilterSettings;
-}
 
 class FilterVertexRemovalPlugin : public QObject, public MeshFilterInterface {
   Q_OBJECT
@@ -28,12 +22,7 @@ class FilterVertexRemovalPlugin : public QObject, public MeshFilterInterface {
   int postCondition(QAction*) const override;
   FILTER_ARITY filterArity(QAction*) const override { return SINGLE_MESH; }
   void initParameterSet(QAction*, MeshModel& m, RichParameterList& par) override;
+  // 2020.09's protocol: false with errorMessage set; nothing may be thrown.
   bool applyFilter(QAction* filter, MeshDocument& md, const RichParameterList& par,
                    vcg::CallBackPos* cb) override;
-
- private:
-  bool apply_checked(MeshDocument& md, const RichParameterList& par, vcg::CallBackPos* cb);
-  // Simplifies one layer in place; "" or the error (the layer is then unchanged).
-  QString simplify_layer(MeshModel& m, const vrs_plugin::FilterSettings& s, int level,
-                         const std::function<bool(float)>& progress);
 };
