@@ -1,12 +1,20 @@
 #!/usr/bin/env bash
 # Installs what a fresh Debian bookworm machine lacks to build and test vrsimplify (MeshLab
-# 2020.09 included), then fetches
-# the sources the build reads but the repository never holds (vcglib and MeshLab's headers, from
-# Debian's `meshlab` source package) and the real test meshes (Debian's `libcgal-demo`).
+# 2020.09 included), then fetches the sources the build reads but the repository never holds
+# (vcglib and MeshLab's headers: 2020.09 from Debian's `meshlab` source package, 2022.02 and
+# 2025.07 from trixie's and sid's, see scripts/lib/meshlab_sources.sh), the real test meshes
+# (Debian's `libcgal-demo`) and pymeshlab with the Python test tools, pinned
+# (requirements.txt), into a virtual environment under $VRS_CACHE (default /var/cache/vrsimplify).
+# With --roots it also makes the Debian trixie and sid roots holding the real MeshLab 2022.02
+# and 2025.07 GUIs (scripts/lib/meshlab_root.sh; a few minutes, once).
 # Idempotent: a second run only checks.
+#   scripts/setup.sh [--roots] [EXTRA_DEBIAN_PACKAGE...]
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
 third="$top/third_party"
+cache=${VRS_CACHE:-/var/cache/vrsimplify}
+roots=0
+if [ "${1:-}" = --roots ]; then roots=1; shift; fi
 sudo_=""
 [ "$(id -u)" -eq 0 ] || sudo_="sudo"
 
@@ -18,7 +26,10 @@ want=(build-essential cmake pkg-config git xz-utils libgtest-dev libgmock-dev li
       # the benchmark's peers and plots
       libmeshoptimizer-dev libvtk9-dev gnuplot-nox
       # robustness: the fuzzer (clang 14 + libFuzzer) and the sweep over assimp's test models
-      clang-14 libfuzzer-14-dev libclang-rt-14-dev libassimp-dev assimp-testmodels time)
+      clang-14 libfuzzer-14-dev libclang-rt-14-dev libassimp-dev assimp-testmodels time
+      # the newer MeshLabs: their sources through a separate apt configuration, their GUIs in
+      # debootstrap roots, pymeshlab in a virtual environment
+      dpkg-dev debootstrap python3-venv)
 want+=("$@")
 missing=()
 for p in "${want[@]}"; do
@@ -33,7 +44,6 @@ if [ "$need_src" -eq 1 ] && ! grep -rqs '^Types:.*deb-src\|^deb-src' /etc/apt/so
   . /etc/os-release
   printf 'Types: deb-src\nURIs: %s\nSuites: %s\nComponents: main\nSigned-By: /usr/share/keyrings/debian-archive-keyring.gpg\n' \
     "$("$top/scripts/lib/debian_mirror.sh")" "$VERSION_CODENAME" | $sudo_ tee "$src_list" >/dev/null
-  missing+=(dpkg-dev)
 fi
 if [ ${#missing[@]} -gt 0 ] || [ "$need_src" -eq 1 ] || [ ! -d "$third/cgal-data" ]; then
   echo "setup: apt-get update"
@@ -62,5 +72,26 @@ if [ ! -d "$third/cgal-data" ]; then
   mkdir -p "$third/cgal-data"
   tar -xzf "$tmp/x/usr/share/doc/libcgal-dev/data.tar.gz" -C "$third/cgal-data"
   rm -rf "$tmp"
+fi
+for v in 2022.02 2025.07; do
+  "$top/scripts/lib/meshlab_sources.sh" "$v" "$third/meshlab-$v"
+done
+
+# pymeshlab and pytest, pinned, in a virtual environment of their own (rebuilt when
+# requirements.txt changes). Debian's python3, whatever else is on PATH.
+venv="$cache/venv"
+req_sha=$(sha256sum "$top/requirements.txt" | cut -d' ' -f1)
+if [ "$(cat "$venv/.requirements.sha256" 2>/dev/null)" != "$req_sha" ]; then
+  echo "setup: Python virtual environment $venv (pymeshlab, pytest)"
+  rm -rf "$venv"
+  /usr/bin/python3 -m venv "$venv"
+  "$venv/bin/pip" install -q --disable-pip-version-check -r "$top/requirements.txt"
+  echo "$req_sha" >"$venv/.requirements.sha256"
+fi
+
+if [ "$roots" -eq 1 ]; then
+  for suite in trixie sid; do
+    "$top/scripts/lib/meshlab_root.sh" "$suite" >/dev/null
+  done
 fi
 echo "setup: ok"

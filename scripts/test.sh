@@ -7,7 +7,7 @@
 #   scripts/test.sh [--no-sanitizers]
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
-"$top/scripts/setup.sh"
+"$top/scripts/setup.sh" --roots
 "$top/scripts/build.sh" -DVRS_BUILD_TESTS=ON
 (cd "$top/build" && ctest --output-on-failure -j "$(nproc)")
 if [ "${1:-}" != "--no-sanitizers" ]; then

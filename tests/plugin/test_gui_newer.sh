@@ -1,0 +1,86 @@
+#!/usr/bin/env bash
+# The real MeshLab 2022.02 or 2025.07 GUI (Debian trixie's or sid's package, in a root made by
+# scripts/lib/meshlab_root.sh) under Xvfb: our build is installed into the root with
+# `cmake --install --component`, the filter is found in Filters > Remeshing, Simplification and
+# Reconstruction, applied from its dialog, then applied with a bad parameter: MeshLab's failure
+# dialog must show our message and the layer stay as it was. Screenshots go with the output.
+#   test_gui_newer.sh 2022.02|2025.07 ROOT BUILD_DIR MESH OUT_DIR
+# The clicks are at fixed places (a 1600x1000 screen, a fresh HOME, MeshLab's default layout);
+# they differ between the two versions, hence the table below.
+set -u
+version=$1 root=$(realpath "$2") build=$(realpath "$3") mesh=$(realpath "$4") out=$(realpath -m "$5")
+here=$(cd "$(dirname "$0")" && pwd)
+case "$version" in #      filter entry      Apply        Levels of detail field
+  2022.02) component=meshlab2022 entry="637 677" apply="685 691" levels="653 568" ;;
+  2025.07) component=meshlab2025 entry="637 620" apply="685 751" levels="653 539" ;;
+  *) echo "usage: test_gui_newer.sh 2022.02|2025.07 ROOT BUILD_DIR MESH OUT_DIR"; exit 2 ;;
+esac
+plugin="$root/usr/lib/x86_64-linux-gnu/meshlab/plugins/libfilter_vertex_removal.so"
+
+inner() {
+  set -u
+  HOME=/tmp/vrs-home "$here/../../scripts/lib/in_root.sh" "$root" meshlab "/tmp/vrs-gui/$(basename "$mesh")" \
+    >"$out/meshlab.log" 2>&1 &
+  local pid=$! i
+  for i in $(seq 60); do # wait for the window and the mesh
+    grep -q "All files opened" "$out/meshlab.log" 2>/dev/null && xdotool search --name MeshLab >/dev/null && break
+    sleep 0.5
+  done
+  sleep 2
+  shot() { import -window root "$out/$1.png"; }
+  xdotool mousemove 116 9 click 1; sleep 1                                 # Filters
+  xdotool mousemove 260 148; sleep 0.5; xdotool mousemove 300 148; sleep 1 # Remeshing, ...
+  xdotool mousemove 600 148; sleep 0.3; xdotool mousemove $entry; sleep 0.5
+  shot 1-remeshing-menu
+  xdotool click 1; sleep 2                                                 # our filter
+  shot 2-dialog
+  xdotool mousemove $apply click 1; sleep 3                                # Apply
+  shot 3-applied
+  xdotool mousemove $levels click --repeat 3 1; sleep 0.3
+  xdotool key ctrl+a type 99; sleep 0.3                                    # Levels of detail: 99
+  xdotool mousemove $apply click 1; sleep 2
+  shot 4-failure-dialog
+  xdotool key Return; sleep 0.5                                            # OK
+  xdotool mousemove $levels click --repeat 3 1; sleep 0.3
+  xdotool key ctrl+a type 1; sleep 0.3
+  xdotool mousemove $apply click 1; sleep 2                                # Apply again
+  shot 5-after-failure
+  pkill -f "meshlab /tmp/vrs-gui/" 2>/dev/null; wait "$pid" 2>/dev/null
+  return 0
+}
+
+if [ "${VRS_GUI_INNER:-}" = 1 ]; then inner; exit 0; fi
+rm -rf "$out" && mkdir -p "$out"
+
+# Install as a user would, into the root standing in for that Debian system; taken out again at
+# the end so that the cached root stays as debootstrap made it.
+DESTDIR="$root" cmake --install "$build" --component "$component" >"$out/install.log" || {
+  echo "FAIL: cmake --install --component $component"; exit 1; }
+trap 'rm -f "$plugin"; rm -rf "$root/tmp/vrs-gui" "$root/tmp/vrs-home"' EXIT
+mkdir -p "$root/tmp/vrs-gui" "$root/tmp/vrs-home" && cp "$mesh" "$root/tmp/vrs-gui/"
+VRS_GUI_INNER=1 timeout 180 xvfb-run -a -s '-screen 0 1600x1000x24' bash "$0" "$@"
+faces=$(awk 'NF && $1 !~ /^#/ { n++; if (n == 2) { print $2; exit } }' "$mesh")
+half=$(( (faces + 1) / 2 ))
+
+passed=0 failed=0
+check() { if eval "$1"; then passed=$((passed + 1)); else failed=$((failed + 1)); echo "FAIL: $2"; fi; }
+log="$out/meshlab.log"
+check '[ -f "$out/install.log" ] && grep -Eq "(Installing|Up-to-date): $plugin" "$out/install.log"' "not installed into MeshLab's plugins folder"
+check '! grep -q "Unable to load\|does not seem to be\|different version\|different floating" "$log"' "MeshLab refused the plugin"
+check 'grep -Eq "Applied filter:? Simplification: Vertex Removal Decimation" "$log"' \
+  "the filter was not applied from the Remeshing menu (see $out/*.png)"
+check 'grep -Eq "Vertex Removal Decimation: $faces -> [0-9]+ faces" "$log"' "no log line for the first run"
+check '[ "$(grep -Eo "$faces -> [0-9]+ faces" "$log" | head -1 | grep -Eo "[0-9]+ faces" | grep -Eo "[0-9]+")" -le "$half" ]' \
+  "the default target (half the faces) was not met"
+check 'grep -q "Vertex Removal Decimation failed: Levels of detail must be in \[1, 16\], got 99" "$log"' \
+  "no failure reported for Levels of detail 99"
+first_out=$(grep -Eo "Decimation: $faces -> [0-9]+" "$log" | head -1 | grep -Eo "[0-9]+$")
+check '[ -n "$first_out" ] && grep -Eq "Vertex Removal Decimation: $first_out -> [0-9]+ faces" "$log"' \
+  "after the failure the layer was not the one the first run left"
+check '[ "$(grep -Ec "Applied filter:? " "$log")" -eq 2 ]' "not exactly two successful applications"
+for s in 1-remeshing-menu 2-dialog 3-applied 4-failure-dialog 5-after-failure; do
+  check '[ -s "$out/$s.png" ]' "no screenshot $s.png"
+done
+echo "MeshLab $version ($(cat "$root/.meshlab-version")): screenshots in $out"
+echo "$passed passed, $failed failed"
+[ "$failed" -eq 0 ]
