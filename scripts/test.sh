@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Sets up, builds and runs every test: the Release build in build/ (core, CLI, the sweep over
-# the real meshes, and the plugin in the real meshlabserver and MeshLab GUI), then the core, CLI
+# the real meshes, and the plugin in every host: MeshLab 2020.09's meshlabserver and GUI, the
+# real MeshLab 2022.02 and 2025.07 GUIs in Debian trixie and sid roots, pymeshlab), then the core, CLI
 # and sweep tests again built with AddressSanitizer + UndefinedBehaviorSanitizer in build/asan/
 # (MeshLab cannot load an instrumented plugin), then a bounded libFuzzer run (VRS_FUZZ_SECONDS,
 # default 120; scripts/fuzz.sh runs longer).

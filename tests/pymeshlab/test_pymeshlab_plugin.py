@@ -205,3 +205,15 @@ def test_wrong_builds_are_refused_by_pymeshlab(plugin, wrong_plugins):
         run = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
                              timeout=120)
         assert run.returncode == 0 and "REFUSED" in run.stdout, (path, run.stdout, run.stderr)
+        assert "different floating point precision" in run.stdout or \
+            "is not a MeshLab plugin" in run.stdout, run.stdout
+
+
+def test_example_script(plugin, meshes, tmp_path):
+    script = meshes.parent / "plugin" / "examples" / "pymeshlab_example.py"
+    out = tmp_path / "elephant-10.ply"
+    run = subprocess.run([sys.executable, str(script), str(meshes / "elephant.off"), str(out),
+                          str(plugin)], capture_output=True, text=True, timeout=120)
+    assert run.returncode == 0, run.stderr
+    assert "5558 -> 556 faces" in run.stdout and "stopped: target reached" in run.stdout
+    assert out.stat().st_size > 0
