@@ -31,6 +31,17 @@ std::string check_options(const Options& o, size_t vertex_count) {
   if (o.locked && o.locked->size() != vertex_count)
     return "lock array has " + std::to_string(o.locked->size()) + " entries for " +
            std::to_string(vertex_count) + " vertices";
+  if (!(o.feature_angle_deg >= 0.0 && o.feature_angle_deg <= 180.0))
+    return "feature angle must be in [0, 180] degrees, got " + std::to_string(o.feature_angle_deg);
+  if (o.constrained_edges) {
+    const auto& e = *o.constrained_edges;
+    if (e.size() % 2) return "constrained edges must be vertex pairs (an even count)";
+    for (size_t i = 0; i < e.size(); ++i)
+      if (e[i] >= vertex_count)
+        return "constrained edge " + std::to_string(i / 2) + " has vertex index " +
+               std::to_string(e[i]) + ", out of range for " + std::to_string(vertex_count) +
+               " vertices";
+  }
   return {};
 }
 

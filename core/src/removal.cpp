@@ -1,16 +1,31 @@
 #include "removal.h"
 
+#include <algorithm>
+
 namespace vrs {
 
 namespace {
 
 // Is (a, b) an edge of the ring's polygon that already exists in the mesh? For an open ring the
-// closing edge (last, first) is new.
-bool is_ring_edge(const Ring& ring, int a, int b) {
+// closing edge (last, first) is new unless `closing_exists`.
+bool is_ring_edge(const Ring& ring, int a, int b, bool closing_exists) {
   int k = ring.verts;
-  if ((a + 1) % k == b && (ring.closed() || a + 1 < k)) return true;
-  if ((b + 1) % k == a && (ring.closed() || b + 1 < k)) return true;
+  bool closed = ring.closed() || closing_exists;
+  if ((a + 1) % k == b && (closed || a + 1 < k)) return true;
+  if ((b + 1) % k == a && (closed || b + 1 < k)) return true;
   return false;
+}
+
+// The ring's positions and their projections on the plane of `n`, relative to v.
+void project(uint32_t v, const Ring& ring, Vec3 n, const Evaluator& eval, Patch& out) {
+  plane_basis(n, out.u, out.w);
+  const Vec3 c = eval.position(v);
+  for (int i = 0; i < ring.verts; ++i) {
+    out.q[i] = eval.position(ring.v[i]);
+    Vec3 d = out.q[i] - c;
+    out.p[i] = {dot(d, out.u), dot(d, out.w)};
+  }
+  out.normal = n;
 }
 
 } // namespace
@@ -47,20 +62,12 @@ bool star_direction(uint32_t v, const Ring& ring, const Evaluator& eval, Vec3& o
 
 Reject plan_removal(uint32_t v, const Ring& ring, Vec3 n, const Evaluator& eval,
                     const Topology& topo, const uint32_t* tris, const float* surface_normals,
-                    const RemovalLimits& limits, Patch& out, bool check_topology) {
+                    const RemovalLimits& limits, Patch& out, bool check_topology, OpenRing open) {
   const int k = ring.verts;
   if (k < 3) return RejectFold;
-  Vec3& u = out.u;
-  Vec3& w = out.w;
-  plane_basis(n, u, w);
-  const Vec3 c = eval.position(v);
-  auto& q = out.q; // the plan keeps them for patch_error
-  auto& p = out.p;
-  for (int i = 0; i < k; ++i) {
-    q[i] = eval.position(ring.v[i]);
-    Vec3 d = q[i] - c;
-    p[i] = {dot(d, u), dot(d, w)};
-  }
+  project(v, ring, n, eval, out); // the plan keeps them for patch_error
+  const auto& q = out.q;
+  const auto& p = out.p;
   const Vec2 o{0, 0};
 
   // The old fan must project without folds: the ring is then a star-shaped simple polygon
@@ -68,10 +75,12 @@ Reject plan_removal(uint32_t v, const Ring& ring, Vec3 n, const Evaluator& eval,
   for (int i = 0; i < ring.faces; ++i)
     if (!(orient2d(o, p[i], p[(i + 1) % k]) > 0)) return RejectFold;
   if (!ring.closed()) {
-    // Open fan: cutting the vertex off must leave a simple polygon, so the vertex must be a
-    // convex corner and the chain must lie beyond the new boundary edge.
-    if (!(orient2d(p[k - 1], o, p[0]) >= 0)) return RejectFold; // straight is fine
-    for (int j = 1; j + 1 < k; ++j)
+    // Open fan: cutting the vertex off must leave a simple polygon. At a convex corner the
+    // chain must lie beyond the chord; at a reflex one (seams only) the chord lies in the
+    // other side's wedge and cannot meet the chain, which is star-shaped around the vertex.
+    const bool convex = orient2d(p[k - 1], o, p[0]) >= 0; // straight is fine
+    if (!convex && open == OpenRing::Border) return RejectFold;
+    for (int j = 1; j + 1 < k && convex; ++j)
       if (!(orient2d(p[k - 1], p[0], p[j]) > 0)) return RejectFold;
   }
 
@@ -81,7 +90,9 @@ Reject plan_removal(uint32_t v, const Ring& ring, Vec3 n, const Evaluator& eval,
     return RejectFold;
   }
 
-  out.normal = n;
+  for (int t = 0; t < out.count; ++t)
+    for (int c = 0; c < 3; ++c)
+      out.from[t][c] = static_cast<uint8_t>(std::min(int(out.tri[t][c]), ring.faces - 1));
   // Topology first (it cannot change with the projection), then shape.
   for (int t = 0; t < out.count && check_topology; ++t) {
     const auto& tri = out.tri[t];
@@ -89,7 +100,9 @@ Reject plan_removal(uint32_t v, const Ring& ring, Vec3 n, const Evaluator& eval,
       return RejectTriangle;
     for (int e = 0; e < 3; ++e) {
       int a = tri[e], b = tri[(e + 1) % 3];
-      if (!is_ring_edge(ring, a, b) && topo.has_edge(ring.v[a], ring.v[b], tris)) return RejectEdge;
+      if (!is_ring_edge(ring, a, b, open == OpenRing::SeamSideOnEdge) &&
+          topo.has_edge(ring.v[a], ring.v[b], tris))
+        return RejectEdge;
     }
   }
   for (int t = 0; t < out.count; ++t) {
@@ -105,6 +118,39 @@ Reject plan_removal(uint32_t v, const Ring& ring, Vec3 n, const Evaluator& eval,
     }
     if (!(dot(face, original) > 0)) return RejectFlip;
   }
+  return RejectCount;
+}
+
+Reject plan_seam_removal(uint32_t v, const Ring& ring, int i, int j, Vec3 n, const Evaluator& eval,
+                         const Topology& topo, const uint32_t* tris, const float* surface_normals,
+                         const RemovalLimits& limits, Patch& out, bool check_topology) {
+  const int k = ring.verts;
+  Patch side;
+  int count = 0;
+  // Side 0 runs from ring[i] to ring[j] counter-clockwise, side 1 from ring[j] back to ring[i].
+  for (int s = 0; s < 2; ++s) {
+    const int first = s == 0 ? i : j, m = (s == 0 ? j - i : k - j + i) + 1;
+    if (m < 3) continue; // one triangle on this side: it goes, the chord is its ring edge
+    const bool on_edge = (s == 0 ? k - j + i : j - i) == 1;
+    Ring sub;
+    sub.verts = m;
+    sub.faces = m - 1;
+    for (int r = 0; r < m; ++r)
+      sub.v[r] = ring.v[(first + r) % k];
+    for (int r = 0; r + 1 < m; ++r)
+      sub.f[r] = ring.f[(first + r) % k];
+    Reject why =
+        plan_removal(v, sub, n, eval, topo, tris, surface_normals, limits, side, check_topology,
+                     on_edge ? OpenRing::SeamSideOnEdge : OpenRing::SeamSide);
+    if (why != RejectCount) return why;
+    for (int t = 0; t < side.count; ++t, ++count)
+      for (int c = 0; c < 3; ++c) {
+        out.tri[count][c] = static_cast<uint8_t>((first + side.tri[t][c]) % k);
+        out.from[count][c] = static_cast<uint8_t>((first + side.from[t][c]) % k);
+      }
+  }
+  out.count = count;
+  project(v, ring, n, eval, out);
   return RejectCount;
 }
 

@@ -4,6 +4,7 @@
 #include <limits>
 
 #include "bucket_queue.h"
+#include "constraints.h"
 #include "evaluation.h"
 #include "heap_queue.h"
 #include "input_check.h"
@@ -57,6 +58,13 @@ class Simplifier {
   bool removable(VertexKind k) const {
     return k == VertexKind::Interior || (opt_.simplify_boundary && k == VertexKind::Boundary);
   }
+  // What the constrained edges allow for a removable vertex: no constraint, a seam through it
+  // (its ring positions in `seam`), or nothing (kept).
+  enum class Along : uint8_t { Free, Seam, Kept };
+  Along along(uint32_t v, const Ring& ring, std::array<int, 2>& seam) const;
+  // The evaluation of v's plane and factor; along a seam the factor also counts v's distance
+  // to the chord that replaces it. +inf factor when v must stay.
+  Evaluation evaluate_plane(uint32_t v, const Ring& ring) const;
   // Priority of v with its current ring (the paper's factor or the planned patch's local
   // error), or +inf when v must stay.
   double evaluate(uint32_t v, const Ring& ring);
@@ -76,7 +84,9 @@ class Simplifier {
   std::vector<float> factor_;
   std::vector<float> normals_; // unit vertex normals of the input surface, 3 a vertex
   std::vector<uint8_t> flags_;
-  std::vector<uint32_t> face_source_; // per face slot: its input face, or kRemoved once rewritten
+  std::vector<uint32_t> face_source_;   // per face slot: its input face, or kRemoved once rewritten
+  std::vector<uint32_t> corner_source_; // per face slot corner: the input corner it carries
+  Constraints constraints_;
   size_t faces_ = 0, vertices_ = 0, target_faces_ = 0, target_vertices_ = 0;
   size_t faces0_ = 0;
   double reference_area_ = 1; // mean input triangle area (LocalError's weight)
@@ -100,6 +110,13 @@ void Simplifier::prepare() {
         flags_[t[i]] = flags_[t[i + 1]] = flags_[t[i + 2]] = kFlagLocked;
 
   topo_.build(t, n);
+  rep_.constrained_edges = constraints_.build(opt_, mesh_.positions.data(), t, topo_, n);
+  if (opt_.corner_sources) {
+    corner_source_.resize(t.size());
+    for (size_t f = 0; f < face_source_.size(); ++f)
+      for (int c = 0; c < 3; ++c)
+        corner_source_[3 * f + c] = 3 * face_source_[f] + c;
+  }
   normals_ = vertex_normals(mesh_.positions, t);
   if (opt_.priority == Priority::LocalError)
     reference_area_ = mean_triangle_area(mesh_.positions.data(), t);
@@ -121,7 +138,13 @@ void Simplifier::prepare() {
       ++rep_.kept_locked;
       continue;
     }
-    if (removable(kind)) factor_[v] = static_cast<float>(evaluate(v, ring));
+    if (!removable(kind)) continue;
+    std::array<int, 2> seam;
+    if (along(v, ring, seam) == Along::Kept) {
+      ++rep_.kept_constrained;
+      continue;
+    }
+    factor_[v] = static_cast<float>(evaluate(v, ring));
   }
 
   const TargetKind tk = opt_.target.kind;
@@ -132,8 +155,29 @@ void Simplifier::prepare() {
   target_vertices_ = tk == TargetKind::Vertices ? opt_.target.vertices : 0;
 }
 
-double Simplifier::evaluate(uint32_t v, const Ring& ring) {
+Simplifier::Along Simplifier::along(uint32_t v, const Ring& ring, std::array<int, 2>& seam) const {
+  const int degree = constraints_.degree(v);
+  if (degree == 0) return Along::Free;
+  return constraints_.seam_of(v, ring, seam[0], seam[1]) ? Along::Seam : Along::Kept;
+}
+
+Evaluation Simplifier::evaluate_plane(uint32_t v, const Ring& ring) const {
   Evaluation e = eval_.evaluate(v, ring, opt_.simplify_boundary);
+  std::array<int, 2> seam;
+  switch (along(v, ring, seam)) {
+  case Along::Free: break;
+  case Along::Kept: e.factor = std::numeric_limits<double>::infinity(); break;
+  case Along::Seam: // the polyline's own deviation, which a flat neighbourhood does not show
+    e.factor =
+        std::max(e.factor, distance_to_line(eval_.position(v), eval_.position(ring.v[seam[0]]),
+                                            eval_.position(ring.v[seam[1]])));
+    break;
+  }
+  return e;
+}
+
+double Simplifier::evaluate(uint32_t v, const Ring& ring) {
+  Evaluation e = evaluate_plane(v, ring);
   if (opt_.priority == Priority::Factor || !std::isfinite(e.factor)) return e.factor;
   Patch patch;
   // The mesh look-ups wait for the pop, where the plan is made again in full.
@@ -142,21 +186,31 @@ double Simplifier::evaluate(uint32_t v, const Ring& ring) {
     ++rep_.rejected[why]; // not queued; evaluated again when its ring changes
     return std::numeric_limits<double>::infinity();
   }
-  return patch_error(v, ring, patch, eval_, reference_area_);
+  double error = patch_error(v, ring, patch, eval_, reference_area_);
+  std::array<int, 2> seam;
+  if (along(v, ring, seam) == Along::Seam)
+    error = std::max(error, distance_to_line(eval_.position(v), eval_.position(ring.v[seam[0]]),
+                                             eval_.position(ring.v[seam[1]])));
+  return error;
 }
 
 Reject Simplifier::plan(uint32_t v, const Ring& ring, const Evaluation& e, Patch& patch,
                         bool check_topology) {
   const uint32_t* tris = mesh_.triangles.data();
-  Reject why = plan_removal(v, ring, e.normal, eval_, topo_, tris, normals_.data(), limits_, patch,
-                            check_topology);
+  std::array<int, 2> seam;
+  const bool on_seam = along(v, ring, seam) == Along::Seam;
+  auto attempt = [&](Vec3 d) {
+    return on_seam ? plan_seam_removal(v, ring, seam[0], seam[1], d, eval_, topo_, tris,
+                                       normals_.data(), limits_, patch, check_topology)
+                   : plan_removal(v, ring, d, eval_, topo_, tris, normals_.data(), limits_, patch,
+                                  check_topology);
+  };
+  Reject why = attempt(e.normal);
   // At tips, creases and thin parts the average plane of a strongly curved ring can fold it
   // or tilt the patch away, while another direction still sees the ring as a star.
   if ((why == RejectFold || why == RejectFlip) && opt_.mode == Mode::Surface3D) {
     Vec3 d;
-    if (star_direction(v, ring, eval_, d))
-      why = plan_removal(v, ring, d, eval_, topo_, tris, normals_.data(), limits_, patch,
-                         check_topology);
+    if (star_direction(v, ring, eval_, d)) why = attempt(d);
   }
   return why;
 }
@@ -197,9 +251,24 @@ void Simplifier::commit(uint32_t v, const Ring& ring, const Patch& patch, Queue&
     for (int c = 0; c < 3; ++c)
       if (tris[3 * f + c] != v) topo_.remove_face(tris[3 * f + c], f);
   }
+  // Per-corner data of the new faces: the corner of the same vertex in the old face the
+  // plan names (read before the slots are overwritten).
+  std::array<std::array<uint32_t, 3>, kMaxRing> inherited;
+  if (!corner_source_.empty())
+    for (int t = 0; t < patch.count; ++t)
+      for (int c = 0; c < 3; ++c) {
+        uint32_t f = ring.f[patch.from[t][c]], u = ring.v[patch.tri[t][c]];
+        int at = tris[3 * f] == u ? 0 : tris[3 * f + 1] == u ? 1 : 2;
+        inherited[t][c] = corner_source_[3 * f + at];
+      }
+  std::array<int, 2> seam;
+  if (along(v, ring, seam) == Along::Seam) constraints_.merge(v, ring.v[seam[0]], ring.v[seam[1]]);
   for (int i = 0; i < ring.faces; ++i) {
     uint32_t f = ring.f[i];
     face_source_[f] = kRemoved;
+    if (i < patch.count && !corner_source_.empty())
+      for (int c = 0; c < 3; ++c)
+        corner_source_[3 * f + c] = inherited[i][c];
     for (int c = 0; c < 3; ++c) {
       tris[3 * f + c] = i < patch.count ? ring.v[patch.tri[i][c]] : kNone;
       if (i < patch.count) topo_.add_face(tris[3 * f + c], f);
@@ -283,7 +352,7 @@ template <class Queue> void Simplifier::run(Queue& queue) {
     ++pops_since_respread;
     VertexKind kind = topo_.ring(v, mesh_.triangles.data(), opt_.max_valence, ring);
     if (!removable(kind)) continue;
-    Evaluation e = eval_.evaluate(v, ring, opt_.simplify_boundary);
+    Evaluation e = evaluate_plane(v, ring);
     if (!std::isfinite(e.factor)) continue;
     // The plan is made again: a diagonal may have become an edge since v was queued.
     Reject why = plan(v, ring, e, patch);
@@ -300,9 +369,13 @@ void Simplifier::compact() {
   auto& tris = mesh_.triangles;
   size_t out = 0;
   rep_.face_source.clear();
+  rep_.corner_source.clear();
   for (size_t i = 0; i < tris.size(); i += 3) {
     if (tris[i] == kNone) continue;
     rep_.face_source.push_back(face_source_[i / 3]);
+    if (!corner_source_.empty())
+      rep_.corner_source.insert(rep_.corner_source.end(), &corner_source_[i],
+                                &corner_source_[i] + 3);
     for (int c = 0; c < 3; ++c)
       tris[out++] = tris[i + c];
   }

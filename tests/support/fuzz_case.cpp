@@ -50,6 +50,7 @@ FuzzCase decode_fuzz_case(const uint8_t* data, size_t size) {
   o.simplify_boundary = f0 & 0x80;
   o.priority = f1 & 1 ? vrs::Priority::Factor : vrs::Priority::LocalError;
   const bool raw_indices = f1 & 2, locks = f1 & 4, cancel = f1 & 8, unchecked = f1 & 16;
+  const bool constrained = f1 & 32, creases = f1 & 64;
 
   const uint16_t intervals = in.u16();
   const uint8_t valence = in.u8();
@@ -77,6 +78,16 @@ FuzzCase decode_fuzz_case(const uint8_t* data, size_t size) {
   const size_t faces = c.mesh.face_count();
   o.target.faces = param % (faces + 2);
   o.target.vertices = param % (n + 2);
+  if (constrained) { // every edge whose index sum falls on the stride: seams of any shape
+    o.corner_sources = true;
+    const uint32_t stride = 2 + lock_stride % 5;
+    for (size_t i = 0; i < c.mesh.triangles.size(); ++i) {
+      uint32_t a = c.mesh.triangles[i], b = c.mesh.triangles[i - i % 3 + (i + 1) % 3];
+      if (a < n && b < n && (a + b) % stride == 0)
+        c.constraints.insert(c.constraints.end(), {a, b});
+    }
+  }
+  if (creases) o.feature_angle_deg = unchecked ? double(raw_param) : double(param % 180);
   if (locks) {
     c.locks.assign(n, 0);
     for (size_t v = 0; v < n; v += 1 + lock_stride % 7)
@@ -107,6 +118,7 @@ std::vector<uint8_t> encode_fuzz_case(const vrs::Mesh& m, uint8_t flags0, uint8_
 std::string run_fuzz_case(const uint8_t* data, size_t size) {
   FuzzCase c = decode_fuzz_case(data, size);
   if (!c.locks.empty()) c.options.locked = &c.locks;
+  if (!c.constraints.empty()) c.options.constrained_edges = &c.constraints;
   bool progress_out_of_range = false;
   int calls = 0;
   if (c.cancel_after > 0)

@@ -16,6 +16,7 @@ struct FuzzCase {
   vrs::Options options; // progress is set by run_fuzz_case when cancel_after > 0
   int cancel_after = 0; // progress calls before the callback says stop (0: no callback)
   std::vector<uint8_t> locks;
+  std::vector<uint32_t> constraints; // constrained edges (pairs), with corner sources asked
 };
 
 // Layout: 2 flag bytes (target kind, mode, queue, mapping, boundary, priority, raw indices,

@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstring>
 #include <unordered_map>
+#include <unordered_set>
 #include <vector>
 
 namespace vrs_test {
@@ -252,6 +253,54 @@ vrs::Mesh without_repeated_corner_faces(const vrs::Mesh& m) {
   return c;
 }
 
+std::string check_corner_sources(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Options& o,
+                                 const vrs::Report& r) {
+  if (!o.corner_sources) return r.corner_source.empty() ? "" : "corner sources not asked for";
+  if (r.corner_source.size() != out.triangles.size()) return "corner_source size differs";
+  std::vector<uint32_t> original(out.vertex_count(), vrs::kRemoved);
+  for (size_t v = 0; v < r.remap.size(); ++v)
+    if (r.remap[v] != vrs::kRemoved) original[r.remap[v]] = uint32_t(v);
+  for (size_t c = 0; c < out.triangles.size(); ++c) {
+    uint32_t s = r.corner_source[c];
+    if (s >= in.triangles.size()) return "corner source out of range";
+    if (in.triangles[s] != original[out.triangles[c]])
+      return "corner " + std::to_string(c) + " takes the data of another vertex";
+  }
+  if (!o.constrained_edges || o.constrained_edges->empty()) return {};
+  // Charts: input faces joined across every edge that is not constrained.
+  const size_t nf = in.face_count();
+  std::vector<uint32_t> parent(nf);
+  for (size_t f = 0; f < nf; ++f)
+    parent[f] = uint32_t(f);
+  auto find = [&](uint32_t f) {
+    while (parent[f] != f)
+      f = parent[f] = parent[parent[f]];
+    return f;
+  };
+  auto key = [](uint32_t a, uint32_t b) {
+    return a < b ? uint64_t(a) << 32 | b : uint64_t(b) << 32 | a;
+  };
+  std::unordered_set<uint64_t> constrained;
+  const auto& ce = *o.constrained_edges;
+  for (size_t i = 0; i + 1 < ce.size(); i += 2)
+    constrained.insert(key(ce[i], ce[i + 1]));
+  std::unordered_map<uint64_t, uint32_t> first_face;
+  for (size_t f = 0; f < nf; ++f)
+    for (int c = 0; c < 3; ++c) {
+      uint32_t a = in.triangles[3 * f + c], b = in.triangles[3 * f + (c + 1) % 3];
+      if (a == b || constrained.count(key(a, b))) continue;
+      auto it = first_face.emplace(key(a, b), uint32_t(f)).first;
+      parent[find(uint32_t(f))] = find(it->second);
+    }
+  for (size_t f = 0; f < out.face_count(); ++f) {
+    uint32_t chart = find(r.corner_source[3 * f] / 3);
+    for (int c = 1; c < 3; ++c)
+      if (find(r.corner_source[3 * f + c] / 3) != chart)
+        return "output face " + std::to_string(f) + " spans two charts";
+  }
+  return {};
+}
+
 std::string check_run(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Options& o,
                       const vrs::Report& r) {
   if (!r.ok) {
@@ -282,6 +331,8 @@ std::string check_run(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Opti
     return std::to_string(f) + " new faces flipped against the input surface";
   if (euler_of(out, out_edges) != euler_of(clean, clean_edges))
     return "a component's Euler characteristic changed";
+  e = check_corner_sources(in, out, o, r);
+  if (!e.empty()) return e;
 
   const vrs::TargetKind k = o.target.kind;
   const size_t target_faces =

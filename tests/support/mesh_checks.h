@@ -46,6 +46,12 @@ bool same_bits(const vrs::Mesh& a, const vrs::Mesh& b);
 // The input without faces that repeat a corner (the core drops them first).
 vrs::Mesh without_repeated_corner_faces(const vrs::Mesh& m);
 
+// With Options::corner_sources: every output corner's source is an input corner of the same
+// vertex, and, with constrained edges given, the three corners of every output face come from
+// one chart (input faces connected across edges that are not constrained). "" when so.
+std::string check_corner_sources(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Options& o,
+                                 const vrs::Report& r);
+
 // Every invariant of one run, for any input (the fuzzer's and the sweep's): a refusal leaves
 // the mesh as given and says why; otherwise valid indices, a vertex subset, no new non-manifold
 // or boundary edges, no new degenerate faces, no flipped new faces, each component's Euler

@@ -93,6 +93,18 @@ struct Options {
   // Optional per-vertex lock (nonzero = never removed), size vertex_count(): selections, tile
   // borders. Not owned.
   const std::vector<uint8_t>* locked = nullptr;
+  // Constrained edges, as vertex index pairs (a0, b0, a1, b1, ...; either order): texture and
+  // normal seams, material borders, any polyline the output must keep. A vertex on exactly two
+  // constrained edges is removed only along them: both sides are re-triangulated apart and
+  // the two edges become one (as an open border is simplified); a vertex on one, or on more
+  // than two, is kept. Pairs that are not edges of the mesh are ignored. Not owned.
+  const std::vector<uint32_t>* constrained_edges = nullptr;
+  // Edges whose two faces' normals turn more than this many degrees apart are constrained too
+  // (creases, as vtkDecimatePro's feature angle). 0 = off; in [0, 180].
+  double feature_angle_deg = 0.0;
+  // Fill Report::corner_source, so that per-corner data (texture coordinates, normals, colors
+  // stored per face corner) can follow the simplification. Costs 12 bytes a face.
+  bool corner_sources = false;
   ProgressFn progress;
 };
 
@@ -133,6 +145,9 @@ struct Report {
   size_t dropped_degenerate_faces = 0; // faces with a repeated index (no area, no topology)
   size_t nonfinite_vertices = 0;       // NaN/inf coordinates: kept with their neighbours
   size_t kept_boundary = 0, kept_nonmanifold = 0, kept_locked = 0, kept_high_valence = 0;
+  // Vertices kept by the constrained edges (on one, or on more than two; or on the border).
+  size_t kept_constrained = 0;
+  size_t constrained_edges = 0;     // constrained edges of the input (given and by feature angle)
   size_t unreferenced_vertices = 0; // left untouched
 
   double max_removed_factor = 0.0; // largest priority (factor or local error) of a removed vertex
@@ -140,6 +155,11 @@ struct Report {
   // For each output face, the input face it is (same corners, same order), or kRemoved for a
   // face the re-triangulation made: lets an adapter keep per-face data of untouched faces.
   std::vector<uint32_t> face_source;
+  // With Options::corner_sources: for each output face corner (3 an output face, in order), the
+  // input corner (3 * input face + corner) whose per-corner data it takes. The corner is of
+  // the same vertex, in a face the new one replaced on the same side of every constrained
+  // edge, so with seams constrained the three corners of a face come from one chart.
+  std::vector<uint32_t> corner_source;
 };
 
 constexpr uint32_t kRemoved = 0xffffffffu;
