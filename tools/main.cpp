@@ -29,6 +29,8 @@ const char* kUsage =
     "  --mapping linear|log            factor -> interval mapping (default linear)\n"
     "  --queue intervals|heap          hash table (default) or exact heap (reference)\n"
     "  --simplify-boundary             also remove boundary vertices (default: kept)\n"
+    "  --feature-angle DEG             keep edges whose faces turn more than DEG apart as\n"
+    "                                  polylines, as texture seams always are (default 0: off)\n"
     "  --json                          print one JSON line instead of the text report\n"
     "  --ascii                         write ascii PLY (default binary)\n";
 
@@ -61,12 +63,14 @@ void print_json(const vrs::Report& r, double seconds_simplify, double seconds_to
     std::printf("%s\"%s\":%zu", i ? "," : "", vrs::reject_name(vrs::Reject(i)), r.rejected[i]);
   std::printf("},\"rejected_total\":%zu,\"stop_reason\":\"%s\",\"target_reached\":%s,"
               "\"max_removed_factor\":%.9g,\"kept\":{\"boundary\":%zu,\"nonmanifold\":%zu,"
-              "\"locked\":%zu,\"high_valence\":%zu},\"input_issues\":{\"degenerate_faces\":%zu,"
+              "\"locked\":%zu,\"high_valence\":%zu,\"constrained\":%zu},"
+              "\"constrained_edges\":%zu,\"input_issues\":{\"degenerate_faces\":%zu,"
               "\"nonfinite_vertices\":%zu,\"unreferenced_vertices\":%zu}}\n",
               r.rejected_total(), vrs::stop_reason_name(r.stop),
               r.target_reached ? "true" : "false", r.max_removed_factor, r.kept_boundary,
-              r.kept_nonmanifold, r.kept_locked, r.kept_high_valence, r.dropped_degenerate_faces,
-              r.nonfinite_vertices, r.unreferenced_vertices);
+              r.kept_nonmanifold, r.kept_locked, r.kept_high_valence, r.kept_constrained,
+              r.constrained_edges, r.dropped_degenerate_faces, r.nonfinite_vertices,
+              r.unreferenced_vertices);
 }
 
 void print_text(const vrs::Report& r, double seconds_simplify, double seconds_total) {
@@ -74,6 +78,10 @@ void print_text(const vrs::Report& r, double seconds_simplify, double seconds_to
   std::printf("output:  %zu vertices, %zu faces (%zu vertices removed)\n", r.vertices, r.faces,
               r.removed);
   std::printf("time:    %.3f s simplify, %.3f s total\n", seconds_simplify, seconds_total);
+  if (r.constrained_edges)
+    std::printf("seams:   %zu constrained edges (per-corner data differs, or creases), %zu "
+                "vertices kept by them\n",
+                r.constrained_edges, r.kept_constrained);
   std::printf("rejected removals: %zu (", r.rejected_total());
   for (int i = 0; i < vrs::RejectCount; ++i)
     std::printf("%s%s %zu", i ? ", " : "", vrs::reject_name(vrs::Reject(i)), r.rejected[i]);
@@ -142,6 +150,9 @@ int main(int argc, char** argv) {
     } else if (a == "--mapping") {
       if (!(v = value()) || !vrs::parse_mapping(v, opt.mapping))
         return usage_error("--mapping must be linear or log");
+    } else if (a == "--feature-angle") {
+      if (!(v = value()) || !parse_double(v, opt.feature_angle_deg))
+        return usage_error("--feature-angle needs degrees in [0, 180]");
     } else if (a == "--intervals") {
       size_t n = 0;
       if (!(v = value()) || !parse_count(v, n) || n > (1u << 20))
@@ -166,6 +177,11 @@ int main(int argc, char** argv) {
     return 3;
   }
   vrs::Mesh mesh = vrs_tool::to_core(*loaded.doc);
+  // Texture coordinates and normals stored per corner: their seams stay, new faces take the
+  // data of the corners they replace.
+  const std::vector<uint32_t> seams = vrs_tool::seams(*loaded.doc, mesh);
+  opt.constrained_edges = &seams;
+  opt.corner_sources = vrs_tool::has_corner_data(*loaded.doc);
   const auto t1 = clock::now();
   vrs::Report report = vrs::simplify(mesh, opt);
   const double seconds_simplify = std::chrono::duration<double>(clock::now() - t1).count();

@@ -25,6 +25,24 @@ bool ends_with(std::string s, const std::string& suffix) {
 
 } // namespace
 
+void VcgDocument::enable(int bits) {
+  using vcg::tri::io::Mask;
+  if ((bits & Mask::IOM_WEDGTEXCOORD) && !mesh.face.IsWedgeTexCoordEnabled())
+    mesh.face.EnableWedgeTexCoord();
+  if ((bits & Mask::IOM_WEDGNORMAL) && !mesh.face.IsWedgeNormalEnabled())
+    mesh.face.EnableWedgeNormal();
+  if ((bits & Mask::IOM_FACECOLOR) && !mesh.face.IsColorEnabled()) mesh.face.EnableColor();
+}
+
+vrs_vcg::CornerData VcgDocument::corner_data() const {
+  using vcg::tri::io::Mask;
+  vrs_vcg::CornerData d;
+  d.texcoord = (mask & Mask::IOM_WEDGTEXCOORD) && mesh.face.IsWedgeTexCoordEnabled();
+  d.normal = (mask & Mask::IOM_WEDGNORMAL) && mesh.face.IsWedgeNormalEnabled();
+  d.face_color = (mask & Mask::IOM_FACECOLOR) && mesh.face.IsColorEnabled();
+  return d;
+}
+
 LoadResult load(const std::string& path) {
   LoadResult r;
   auto* doc = new VcgDocument;
@@ -37,6 +55,9 @@ LoadResult load(const std::string& path) {
     } else if (ends_with(path, ".off")) {
       error = read_off(path, *doc);
     } else {
+      // vcglib reads into the optional components only when they are on: ask the file first.
+      int wanted = 0;
+      if (vcg::tri::io::Importer<VcgMesh>::LoadMask(path.c_str(), wanted)) doc->enable(wanted);
       int err = vcg::tri::io::Importer<VcgMesh>::Open(doc->mesh, path.c_str(), doc->mask);
       if (err != 0 && vcg::tri::io::Importer<VcgMesh>::ErrorCritical(err))
         error = vcg::tri::io::Importer<VcgMesh>::ErrorMsg(err);
@@ -78,8 +99,26 @@ vrs::Mesh to_core(const VcgDocument& doc) {
   return out;
 }
 
+bool has_corner_data(const VcgDocument& doc) {
+  return doc.corner_data().any();
+}
+
+std::vector<uint32_t> seams(const VcgDocument& doc, const vrs::Mesh& core) {
+  const VcgMesh& m = doc.mesh;
+  std::vector<size_t> faces;
+  for (size_t f = 0; f < m.face.size(); ++f)
+    if (!m.face[f].IsD()) faces.push_back(f);
+  return vrs_vcg::seam_edges(m, doc.corner_data(), faces,
+                             [&](uint32_t f, int c) { return core.triangles[3 * f + c]; });
+}
+
 void apply(VcgDocument& doc, const vrs::Mesh& simplified, const vrs::Report& report) {
   VcgMesh& m = doc.mesh;
+  const vrs_vcg::CornerData data = doc.corner_data();
+  const bool carry = data.any() && report.corner_source.size() == simplified.triangles.size();
+  std::vector<size_t> live; // core face index -> index in m.face
+  for (size_t f = 0; f < m.face.size(); ++f)
+    if (!m.face[f].IsD()) live.push_back(f);
   std::vector<uint32_t> old_of(simplified.vertex_count());
   for (size_t v = 0; v < report.remap.size(); ++v) {
     if (report.remap[v] == vrs::kRemoved)
@@ -91,17 +130,26 @@ void apply(VcgDocument& doc, const vrs::Mesh& simplified, const vrs::Report& rep
     if (!f.IsD()) vcg::tri::Allocator<VcgMesh>::DeleteFace(m, f);
   auto fi = vcg::tri::Allocator<VcgMesh>::AddFaces(m, simplified.face_count());
   for (size_t t = 0; t < simplified.face_count(); ++t, ++fi)
-    for (int c = 0; c < 3; ++c)
+    for (int c = 0; c < 3; ++c) {
       fi->V(c) = &m.vert[old_of[simplified.triangles[3 * t + c]]];
+      if (carry) {
+        const uint32_t source = report.corner_source[3 * t + c];
+        vrs_vcg::copy_corner(data, m.face[live[source / 3]], int(source % 3), *fi, c, c == 0);
+      }
+    }
+  // Without corner sources the new faces have no per-corner data to write.
+  if (!carry)
+    doc.mask &= ~(vcg::tri::io::Mask::IOM_WEDGTEXCOORD | vcg::tri::io::Mask::IOM_WEDGNORMAL |
+                  vcg::tri::io::Mask::IOM_FACECOLOR);
   vcg::tri::Allocator<VcgMesh>::CompactEveryVector(m);
   vcg::tri::UpdateBounding<VcgMesh>::Box(m);
 }
 
 std::string save(VcgDocument& doc, const std::string& path, bool ascii) {
-  // Per-vertex data survives; per-face and per-wedge data do not (the faces are new).
   using vcg::tri::io::Mask;
   int mask = doc.mask & (Mask::IOM_VERTCOORD | Mask::IOM_VERTNORMAL | Mask::IOM_VERTCOLOR |
-                         Mask::IOM_VERTQUALITY | Mask::IOM_VERTTEXCOORD | Mask::IOM_VERTFLAGS);
+                         Mask::IOM_VERTQUALITY | Mask::IOM_VERTTEXCOORD | Mask::IOM_VERTFLAGS |
+                         Mask::IOM_WEDGTEXCOORD | Mask::IOM_WEDGNORMAL | Mask::IOM_FACECOLOR);
   int err;
   if (ends_with(path, ".ply")) {
     err = vcg::tri::io::ExporterPLY<VcgMesh>::Save(doc.mesh, path.c_str(), mask, !ascii);
@@ -109,6 +157,10 @@ std::string save(VcgDocument& doc, const std::string& path, bool ascii) {
       return std::string("cannot write ") + path + ": " +
              vcg::tri::io::ExporterPLY<VcgMesh>::ErrorMsg(err);
     return {};
+  }
+  if (ends_with(path, ".obj")) {
+    std::string e = write_obj(path, doc);
+    return e.empty() ? e : "cannot write " + path + ": " + e;
   }
   err = vcg::tri::io::Exporter<VcgMesh>::Save(doc.mesh, path.c_str(), mask);
   if (err)

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include "vrs/simplify.h"
 
@@ -21,11 +22,19 @@ void close(VcgDocument* doc);
 // Positions and triangles of the document, in file order.
 vrs::Mesh to_core(const VcgDocument& doc);
 
+// True when the document holds per-corner data (texture coordinates, normals) or face colors,
+// which then follow the simplification (ask the core for corner sources).
+bool has_corner_data(const VcgDocument& doc);
+// Edges across which that data differs (seams), as core vertex pairs: the core keeps them.
+std::vector<uint32_t> seams(const VcgDocument& doc, const vrs::Mesh& core);
+
 // Applies the result: drops removed vertices (attributes of the kept ones untouched) and
-// replaces the faces by the simplified ones.
+// replaces the faces by the simplified ones, each corner with the per-corner data of the input
+// corner the report names (when it has corner sources).
 void apply(VcgDocument& doc, const vrs::Mesh& simplified, const vrs::Report& report);
 
-// Writes with every per-vertex attribute the input had. Empty string on success.
+// Writes with every per-vertex, per-corner and per-face attribute the input had (per-corner
+// and per-face ones only when apply() could carry them). Empty string on success.
 std::string save(VcgDocument& doc, const std::string& path, bool ascii);
 
 } // namespace vrs_tool

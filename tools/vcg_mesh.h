@@ -6,6 +6,8 @@
 
 #include <vcg/complex/complex.h>
 
+#include "vcg_corner_data.h"
+
 namespace vrs_tool {
 
 class Vertex;
@@ -14,19 +16,29 @@ struct Types : public vcg::UsedTypes<vcg::Use<Vertex>::AsVertexType, vcg::Use<Fa
 class Vertex
     : public vcg::Vertex<Types, vcg::vertex::Coord3f, vcg::vertex::Normal3f, vcg::vertex::Color4b,
                          vcg::vertex::Qualityf, vcg::vertex::TexCoord2f, vcg::vertex::BitFlags> {};
-class Face : public vcg::Face<Types, vcg::face::VertexRef, vcg::face::BitFlags> {};
-class VcgMesh : public vcg::tri::TriMesh<std::vector<Vertex>, std::vector<Face>> {};
+// Per-corner data and face colors are optional components, enabled only when a file has them
+// (a 19 M-face mesh without them costs nothing more).
+class Face : public vcg::Face<Types, vcg::face::InfoOcf, vcg::face::VertexRef, vcg::face::BitFlags,
+                              vcg::face::Color4bOcf, vcg::face::WedgeTexCoordfOcf,
+                              vcg::face::WedgeNormal3fOcf> {};
+class VcgMesh : public vcg::tri::TriMesh<std::vector<Vertex>, vcg::face::vector_ocf<Face>> {};
 
 class VcgDocument {
  public:
   VcgMesh mesh;
-  int mask = 0;
+  int mask = 0; // vcg::tri::io::Mask bits of what the file held
+
+  // Enables the optional components `mask` asks for (before faces are read into them).
+  void enable(int mask_bits);
+  // What of the per-corner and per-face data the document holds.
+  vrs_vcg::CornerData corner_data() const;
 };
 
-// Readers for the formats whose vcglib 2020.09 importer is broken (see own_readers.cpp).
+// Readers and a writer for the formats whose vcglib 2020.09 code is broken (own_formats.cpp).
 // Fill doc and return "" or an error message.
 std::string read_obj(const std::string& path, VcgDocument& doc);
 std::string read_stl(const std::string& path, VcgDocument& doc);
 std::string read_off(const std::string& path, VcgDocument& doc);
+std::string write_obj(const std::string& path, const VcgDocument& doc);
 
 } // namespace vrs_tool

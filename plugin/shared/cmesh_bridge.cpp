@@ -29,6 +29,20 @@ CoreCopy to_core(CMeshO& m) {
   return c;
 }
 
+vrs_vcg::CornerData corner_data(const MeshModel& m) {
+  vrs_vcg::CornerData d;
+  d.texcoord = m.hasDataMask(MeshModel::MM_WEDGTEXCOORD);
+  d.normal = m.hasDataMask(MeshModel::MM_WEDGNORMAL);
+  d.color = m.hasDataMask(MeshModel::MM_WEDGCOLOR);
+  d.face_color = m.hasDataMask(MeshModel::MM_FACECOLOR);
+  return d;
+}
+
+std::vector<uint32_t> seams(const CMeshO& m, const CoreCopy& c, const vrs_vcg::CornerData& d) {
+  return vrs_vcg::seam_edges(m, d, c.face,
+                             [&](uint32_t f, int k) { return c.mesh.triangles[3 * f + k]; });
+}
+
 std::vector<uint8_t> lock_outside_selection(const CMeshO& m, const CoreCopy& c) {
   std::vector<uint8_t> lock(c.vertex.size(), 0);
   for (size_t f = 0; f < c.face.size(); ++f)
@@ -39,7 +53,7 @@ std::vector<uint8_t> lock_outside_selection(const CMeshO& m, const CoreCopy& c) 
 }
 
 void apply(CMeshO& m, const CoreCopy& c, const vrs::Mesh& out, const vrs::Report& r,
-           bool select_new_faces) {
+           bool select_new_faces, const vrs_vcg::CornerData& d) {
   // Every allocation first: if one fails, the mesh has not been touched yet.
   std::vector<CVertexO*> kept(out.vertex_count(), nullptr);
   std::vector<char> survives(c.face.size(), 0);
@@ -57,8 +71,13 @@ void apply(CMeshO& m, const CoreCopy& c, const vrs::Mesh& out, const vrs::Report
   auto fi = vcg::tri::Allocator<CMeshO>::AddFaces(m, fresh);
   for (size_t t = 0; t < r.face_source.size(); ++t) {
     if (r.face_source[t] != vrs::kRemoved) continue;
-    for (int k = 0; k < 3; ++k)
+    for (int k = 0; k < 3; ++k) {
       fi->V(k) = kept[out.triangles[3 * t + k]];
+      if (d.any()) {
+        const uint32_t source = r.corner_source[3 * t + k];
+        vrs_vcg::copy_corner(d, m.face[c.face[source / 3]], int(source % 3), *fi, k, k == 0);
+      }
+    }
     if (select_new_faces) fi->SetS();
     ++fi;
   }

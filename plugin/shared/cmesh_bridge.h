@@ -7,6 +7,7 @@
 #include <string>
 #include <vector>
 
+#include "vcg_corner_data.h"
 #include "vrs/simplify.h"
 
 namespace vrs_plugin {
@@ -23,10 +24,17 @@ CoreCopy to_core(CMeshO& m);
 // (as Quadric Edge Collapse Decimation does).
 std::vector<uint8_t> lock_outside_selection(const CMeshO& m, const CoreCopy& copy);
 
+// The per-corner and per-face data the layer holds (texture coordinates, normals, colors).
+vrs_vcg::CornerData corner_data(const MeshModel& m);
+
+// Edges across which that data differs: the core keeps them (constrained edges).
+std::vector<uint32_t> seams(const CMeshO& m, const CoreCopy& copy, const vrs_vcg::CornerData& d);
+
 // Writes the simplified mesh back: removed vertices are deleted, faces the core left untouched
-// keep every attribute, new faces are added (selected when `select_new_faces`), then the mesh
-// is compacted. Call only with a successful report.
+// keep every attribute, new faces are added (selected when `select_new_faces`) with the corner
+// and face data of the input corners the report names, then the mesh is compacted. Call only
+// with a successful report.
 void apply(CMeshO& m, const CoreCopy& copy, const vrs::Mesh& simplified, const vrs::Report& r,
-           bool select_new_faces);
+           bool select_new_faces, const vrs_vcg::CornerData& d);
 
 } // namespace vrs_plugin

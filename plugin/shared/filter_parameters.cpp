@@ -52,6 +52,12 @@ void declare_parameters(const MeshModel& m, RichParameterList& par) {
   par.addParam(RichInt("LODLevels", 1, "Levels of detail",
                        "If more than 1, make that many new layers, each simplified from the "
                        "previous one by the same reduction; the input layer is left untouched."));
+  if (!kScriptsListEveryParameter)
+    par.addParam(RichFloat("FeatureAngle", 0, "Crease angle (degrees)",
+                           "If non zero, edges whose two faces turn more than this many degrees "
+                           "apart are kept as polylines, as texture seams always are: a vertex "
+                           "on such a crease goes only along it (vtkDecimatePro's feature "
+                           "angle). 0 = off."));
 }
 
 QString read_parameters(const RichParameterList& par, const CMeshO& m, FilterSettings& s) {
@@ -67,6 +73,7 @@ QString read_parameters(const RichParameterList& par, const CMeshO& m, FilterSet
   s.selected = par.getBool("Selected");
   s.auto_clean = par.getBool("AutoClean");
   s.lod_levels = par.getInt("LODLevels");
+  s.feature_angle = par.hasParameter("FeatureAngle") ? par.getFloat("FeatureAngle") : 0.0;
   s.input_faces = m.fn;
   s.input_vertices = m.vn;
 
@@ -86,6 +93,8 @@ QString read_parameters(const RichParameterList& par, const CMeshO& m, FilterSet
     return QString("Hash table intervals must be in [2, 1048576], got %1.").arg(s.intervals);
   if (s.lod_levels < 1 || s.lod_levels > 16)
     return QString("Levels of detail must be in [1, 16], got %1.").arg(s.lod_levels);
+  if (!(s.feature_angle >= 0 && s.feature_angle <= 180))
+    return QString("Crease angle must be in [0, 180] degrees, got %1.").arg(s.feature_angle);
   if (s.selected && m.sfn == 0)
     return "Simplify only selected faces is on, but no face is selected.";
 
@@ -103,6 +112,7 @@ vrs::Options FilterSettings::options_for(int level, int faces, int vertices) con
   o.priority = priority;
   o.intervals = intervals;
   o.simplify_boundary = !preserve_boundary;
+  o.feature_angle_deg = feature_angle;
   vrs::Target& t = o.target;
   // Later levels repeat the first level's reduction on the previous level.
   auto scaled = [&](int first_target, int input, int now) {

@@ -19,6 +19,10 @@
 
 namespace vrs_plugin {
 
+// MeshLab 2020.09's meshlabserver aborts a script that lacks one of a filter's parameters, so a
+// parameter added later would break every .mlx written for it: new parameters go to 2022+ only.
+constexpr bool kScriptsListEveryParameter = VRS_MESHLAB_API < 2022;
+
 inline void delete_layer(MeshDocument& md, MeshModel* m) {
 #if VRS_MESHLAB_API >= 2022
   md.delMesh(m->id());

@@ -58,6 +58,7 @@ QString lod_label(const QString& base, int level) {
 struct Totals {
   size_t removed = 0, rejected[vrs::RejectCount] = {};
   size_t kept_boundary = 0, kept_nonmanifold = 0, kept_locked = 0, kept_high_valence = 0;
+  size_t kept_constrained = 0, constrained_edges = 0;
   double max_priority = 0, seconds = 0;
   bool target_reached = true;
   vrs::StopReason stop = vrs::StopReason::TargetReached; // of the last level
@@ -151,6 +152,8 @@ Outcome Application::run(const RichParameterList& par) {
   r["kept_nonmanifold"] = count(totals_.kept_nonmanifold);
   r["kept_locked"] = count(totals_.kept_locked);
   r["kept_high_valence"] = count(totals_.kept_high_valence);
+  r["kept_constrained"] = count(totals_.kept_constrained);
+  r["constrained_edges"] = count(totals_.constrained_edges);
   r["max_priority"] = totals_.max_priority;
   r["seconds"] = totals_.seconds;
   out.ok = true;
@@ -161,6 +164,13 @@ QString Application::simplify_layer(MeshModel& m, const FilterSettings& s, int l
                                     const std::function<bool(float)>& progress) {
   CoreCopy copy = to_core(m.cm);
   vrs::Options o = s.options_for(level, m.cm.fn, m.cm.vn);
+  // Texture coordinates, normals and colors stored per face corner: the edges where they
+  // differ are seams the core must keep, and new faces take the data of the corners they
+  // replace.
+  const vrs_vcg::CornerData data = corner_data(m);
+  const std::vector<uint32_t> seam_edges = seams(m.cm, copy, data);
+  o.constrained_edges = &seam_edges;
+  o.corner_sources = data.any();
   std::vector<uint8_t> lock;
   if (s.selected) {
     lock = lock_outside_selection(m.cm, copy);
@@ -176,7 +186,7 @@ QString Application::simplify_layer(MeshModel& m, const FilterSettings& s, int l
     return QString("Vertex Removal Decimation: %1; the mesh was not changed.")
         .arg(QString::fromStdString(r.message));
 
-  apply(m.cm, copy, mesh, r, s.selected);
+  apply(m.cm, copy, mesh, r, s.selected, data);
   if (s.auto_clean) {
     int unreferenced = vcg::tri::Clean<CMeshO>::RemoveUnreferencedVertex(m.cm);
     if (unreferenced)
@@ -196,6 +206,8 @@ QString Application::simplify_layer(MeshModel& m, const FilterSettings& s, int l
   totals_.kept_nonmanifold += r.kept_nonmanifold;
   totals_.kept_locked += r.kept_locked;
   totals_.kept_high_valence += r.kept_high_valence;
+  totals_.kept_constrained += r.kept_constrained;
+  totals_.constrained_edges = std::max(totals_.constrained_edges, r.constrained_edges);
   totals_.max_priority = std::max(totals_.max_priority, r.max_removed_factor);
   totals_.seconds += seconds;
   totals_.target_reached = totals_.target_reached && r.target_reached;
@@ -217,6 +229,15 @@ QString Application::simplify_layer(MeshModel& m, const FilterSettings& s, int l
                     .arg(vrs::reject_name(vrs::Reject(i)))
                     .arg(r.rejected[i]);
   log(QString("Rejected removals: %1 (%2)").arg(r.rejected_total()).arg(rejected));
+  if (r.constrained_edges)
+    log(QString("Seams and creases: %1 constrained edges (%2%3), %4 vertices kept by them")
+            .arg(r.constrained_edges)
+            .arg(data.any() ? "where texture coordinates, normals or colors per corner differ" : "")
+            .arg(s.feature_angle > 0 ? QString("%1edges turning over %2 degrees")
+                                           .arg(data.any() ? ", and " : "")
+                                           .arg(s.feature_angle)
+                                     : "")
+            .arg(r.kept_constrained));
   if (r.target_reached) {
     log(QString("Stopped: %1").arg(vrs::stop_reason_name(r.stop)));
   } else {

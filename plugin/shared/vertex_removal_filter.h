@@ -31,7 +31,9 @@ struct Host {
 // removed_vertices, levels, stop_reason (vrs::StopReason as a number: 0 target reached, 1 max
 // priority, 2 last interval, 3 no candidates left, 4 cancelled), target_reached,
 // rejected_removals and rejected_<reason> for each vrs::Reject, kept_boundary,
-// kept_nonmanifold, kept_locked, kept_high_valence (summed over LOD levels), max_priority (the
+// kept_nonmanifold, kept_locked, kept_high_valence, kept_constrained (vertices kept by seams
+// and creases) (summed over LOD levels), constrained_edges (seam and crease edges of the
+// input), max_priority (the
 // largest priority of a removed vertex, mesh units), seconds (core time).
 using FilterResult = std::map<std::string, QVariant>;
 

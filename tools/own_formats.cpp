@@ -1,14 +1,21 @@
-// File readers of our own, for the formats whose vcglib 2020.09 importer is broken:
+// File readers and writers of our own, for the formats whose vcglib 2020.09 code is broken.
+// Readers:
 // - OBJ: every triangle that uses the file's first vertex is dropped (the importer checks the
 //   1-based index after making it 0-based);
 // - binary STL: the 80-byte header is read as a C string without a terminator (a stack
 //   overflow that AddressSanitizer reports on any header without a NUL);
 // - OFF: a line of blanks among the vertices makes it call strtol on a null pointer (a crash,
 //   CGAL's prim.off), and a huge declared count is allocated before anything is checked.
+// Writer:
+// - OBJ: vcglib writes coordinates with 6 decimals, so kept vertices would not be the input's.
+#include <algorithm>
+#include <array>
 #include <cstdint>
+#include <cstdio>
 #include <cstdlib>
 #include <cstring>
 #include <fstream>
+#include <map>
 #include <sstream>
 #include <vector>
 
@@ -36,17 +43,43 @@ void fill(VcgDocument& doc, const std::vector<vcg::Point3f>& pos,
              (colored ? vcg::tri::io::Mask::IOM_VERTCOLOR : 0);
 }
 
+// An OBJ corner "v", "v/t", "v/t/n" or "v//n" as 0-based indices (-1 when absent); false when
+// an index is 0 or names nothing.
+bool parse_corner(const std::string& corner, size_t nv, size_t nt, size_t nn, long out[3]) {
+  const size_t sizes[3] = {nv, nt, nn};
+  size_t at = 0;
+  for (int k = 0; k < 3; ++k) {
+    out[k] = -1;
+    if (at > corner.size()) continue;
+    size_t end = corner.find('/', at);
+    std::string part = corner.substr(at, end == std::string::npos ? std::string::npos : end - at);
+    at = end == std::string::npos ? corner.size() + 1 : end + 1;
+    if (part.empty()) {
+      if (k == 0) return false;
+      continue;
+    }
+    long i = std::strtol(part.c_str(), nullptr, 10);
+    long idx = i > 0 ? i - 1 : long(sizes[k]) + i;
+    if (i == 0 || idx < 0 || idx >= long(sizes[k])) return false;
+    out[k] = idx;
+  }
+  return true;
+}
+
 } // namespace
 
-// Positions and faces (polygons fanned, negative indices relative) with the common
-// "v x y z r g b" colour extension.
+// Positions, faces (polygons fanned, negative indices relative) with the common
+// "v x y z r g b" colour extension, and the faces' per-corner texture coordinates ("vt") and
+// normals ("vn"), kept per corner as the file gives them.
 std::string read_obj(const std::string& path, VcgDocument& doc) {
   std::ifstream in(path);
   if (!in) return "cannot open file";
   VcgMesh& m = doc.mesh;
-  std::vector<vcg::Point3f> pos;
+  std::vector<vcg::Point3f> pos, normals;
+  std::vector<vcg::Point2f> uvs;
   std::vector<vcg::Color4b> color;
   std::vector<int> tris;
+  std::vector<long> corner_uv, corner_normal; // per triangle corner, -1 when absent
   std::string line;
   size_t line_no = 0;
   while (std::getline(in, line)) {
@@ -59,21 +92,51 @@ std::string read_obj(const std::string& path, VcgDocument& doc) {
       if (!(s >> x >> y >> z)) return "bad vertex on line " + std::to_string(line_no);
       pos.emplace_back(x, y, z);
       if (s >> r >> g >> b) color.emplace_back(vcg::Color4b(r * 255, g * 255, b * 255, 255));
+    } else if (tag == "vt") {
+      float u, v = 0;
+      if (!(s >> u)) return "bad texture coordinate on line " + std::to_string(line_no);
+      s >> v;
+      uvs.emplace_back(u, v);
+    } else if (tag == "vn") {
+      float x, y, z;
+      if (!(s >> x >> y >> z)) return "bad normal on line " + std::to_string(line_no);
+      normals.emplace_back(x, y, z);
     } else if (tag == "f") {
-      std::vector<int> poly;
+      std::vector<std::array<long, 3>> poly;
       std::string corner;
       while (s >> corner) {
-        long i = std::strtol(corner.c_str(), nullptr, 10); // "i", "i/t", "i/t/n", "i//n"
-        long idx = i > 0 ? i - 1 : long(pos.size()) + i;
-        if (i == 0 || idx < 0 || idx >= long(pos.size()))
+        std::array<long, 3> c;
+        if (!parse_corner(corner, pos.size(), uvs.size(), normals.size(), c.data()))
           return "face on line " + std::to_string(line_no) + " names a missing vertex";
-        poly.push_back(int(idx));
+        poly.push_back(c);
       }
       for (size_t j = 1; j + 1 < poly.size(); ++j)
-        tris.insert(tris.end(), {poly[0], poly[j], poly[j + 1]});
+        for (size_t k : {size_t(0), j, j + 1}) {
+          tris.push_back(int(poly[k][0]));
+          corner_uv.push_back(poly[k][1]);
+          corner_normal.push_back(poly[k][2]);
+        }
     }
   }
   fill(doc, pos, color, tris);
+  const bool has_uv =
+      std::any_of(corner_uv.begin(), corner_uv.end(), [](long i) { return i >= 0; });
+  const bool has_n =
+      std::any_of(corner_normal.begin(), corner_normal.end(), [](long i) { return i >= 0; });
+  using vcg::tri::io::Mask;
+  doc.enable((has_uv ? Mask::IOM_WEDGTEXCOORD : 0) | (has_n ? Mask::IOM_WEDGNORMAL : 0));
+  doc.mask |= (has_uv ? Mask::IOM_WEDGTEXCOORD : 0) | (has_n ? Mask::IOM_WEDGNORMAL : 0);
+  for (size_t c = 0; c < tris.size() && (has_uv || has_n); ++c) {
+    Face& f = m.face[c / 3];
+    if (has_uv) {
+      long t = corner_uv[c];
+      f.WT(c % 3).U() = t >= 0 ? uvs[t].X() : 0.0f;
+      f.WT(c % 3).V() = t >= 0 ? uvs[t].Y() : 0.0f;
+      f.WT(c % 3).N() = 0;
+    }
+    if (has_n)
+      f.WN(c % 3) = corner_normal[c] >= 0 ? normals[corner_normal[c]] : vcg::Point3f(0, 0, 0);
+  }
   return {};
 }
 
@@ -185,6 +248,74 @@ std::string read_off(const std::string& path, VcgDocument& doc) {
   }
   fill(doc, pos, colors ? color : std::vector<vcg::Color4b>{}, tris);
   return {};
+}
+
+// Positions (and vertex colors) to 9 significant digits, which round-trip a float exactly;
+// per-corner texture coordinates and normals as "vt"/"vn" with one entry per distinct value.
+std::string write_obj(const std::string& path, const VcgDocument& doc) {
+  std::ofstream out(path);
+  if (!out) return "cannot open for writing";
+  const VcgMesh& m = doc.mesh;
+  const vrs_vcg::CornerData d = doc.corner_data();
+  const bool colors = doc.mask & vcg::tri::io::Mask::IOM_VERTCOLOR;
+  char buf[128];
+  std::vector<int> index(m.vert.size(), -1);
+  int next = 0;
+  for (size_t v = 0; v < m.vert.size(); ++v) {
+    if (m.vert[v].IsD()) continue;
+    index[v] = ++next;
+    const auto& p = m.vert[v].cP();
+    int n = std::snprintf(buf, sizeof buf, "v %.9g %.9g %.9g", p[0], p[1], p[2]);
+    out.write(buf, n);
+    if (colors) {
+      const auto& c = m.vert[v].cC();
+      n = std::snprintf(buf, sizeof buf, " %.9g %.9g %.9g", c[0] / 255.0, c[1] / 255.0,
+                        c[2] / 255.0);
+      out.write(buf, n);
+    }
+    out << '\n';
+  }
+  // One "vt"/"vn" line per distinct value, in the order the faces use them.
+  std::map<std::pair<float, float>, int> uv_index;
+  std::map<std::array<float, 3>, int> n_index;
+  std::vector<std::array<int, 3>> uv_of, n_of;
+  for (const Face& f : m.face) {
+    if (f.IsD()) continue;
+    std::array<int, 3> uv{}, nn{};
+    for (int c = 0; c < 3; ++c) {
+      if (d.texcoord) {
+        auto key = std::make_pair(f.cWT(c).U(), f.cWT(c).V());
+        auto it = uv_index.emplace(key, int(uv_index.size()) + 1);
+        if (it.second)
+          out.write(buf, std::snprintf(buf, sizeof buf, "vt %.9g %.9g\n", key.first, key.second));
+        uv[c] = it.first->second;
+      }
+      if (d.normal) {
+        std::array<float, 3> key{f.cWN(c)[0], f.cWN(c)[1], f.cWN(c)[2]};
+        auto it = n_index.emplace(key, int(n_index.size()) + 1);
+        if (it.second)
+          out.write(buf,
+                    std::snprintf(buf, sizeof buf, "vn %.9g %.9g %.9g\n", key[0], key[1], key[2]));
+        nn[c] = it.first->second;
+      }
+    }
+    uv_of.push_back(uv);
+    n_of.push_back(nn);
+  }
+  size_t i = 0;
+  for (const Face& f : m.face) {
+    if (f.IsD()) continue;
+    out << 'f';
+    for (int c = 0; c < 3; ++c) {
+      out << ' ' << index[vcg::tri::Index(m, f.cV(c))];
+      if (d.texcoord || d.normal) out << '/';
+      if (d.texcoord) out << uv_of[i][c];
+      if (d.normal) out << '/' << n_of[i][c];
+    }
+    out << '\n';
+    ++i;
+  }
+  return out ? std::string() : "write failed";
 }
 
 } // namespace vrs_tool

@@ -1,0 +1,91 @@
+// Per-corner (wedge) and per-face data of a vcglib mesh through a simplification, shared by
+// the CLI (tools/) and the MeshLab plugin (plugin/): which edges are seams of that data (the
+// core keeps them as constrained edges), and the copy of a corner's data from the input
+// corner the core names (vrs::Report::corner_source). Header-only: each side compiles it
+// against its own vcglib and mesh type.
+#pragma once
+
+#include <cstdint>
+#include <cstring>
+#include <unordered_map>
+#include <vector>
+
+namespace vrs_vcg {
+
+// Which data the mesh really holds (a component may exist in the type but be empty or off).
+struct CornerData {
+  bool texcoord = false; // wedge texture coordinates, texture index included
+  bool normal = false;   // wedge normals
+  bool color = false;    // wedge colors
+  bool face_color = false;
+  bool any() const { return texcoord || normal || color || face_color; }
+};
+
+namespace detail {
+
+template <class T> bool same_bits(const T& a, const T& b) {
+  return std::memcmp(&a, &b, sizeof(T)) == 0; // NaN-safe, and -0 differs from 0 on purpose
+}
+
+template <class Face>
+bool same_corner(const CornerData& d, const Face& f, int i, const Face& g, int j) {
+  if (d.texcoord && !(same_bits(f.cWT(i).U(), g.cWT(j).U()) &&
+                      same_bits(f.cWT(i).V(), g.cWT(j).V()) && f.cWT(i).N() == g.cWT(j).N()))
+    return false;
+  if (d.normal && !same_bits(f.cWN(i), g.cWN(j))) return false;
+  if (d.color && !same_bits(f.cWC(i), g.cWC(j))) return false;
+  return true;
+}
+
+} // namespace detail
+
+// Seams as vertex pairs in the core's numbering: edges across which any of the data differs
+// at either end, or whose faces differ in face data (a material border is a seam too).
+// `vertex_of(face, corner)` gives the core index of a face's corner; `faces` lists the mesh's
+// live faces in core order.
+template <class Mesh, class VertexOf>
+std::vector<uint32_t> seam_edges(const Mesh& m, const CornerData& d,
+                                 const std::vector<size_t>& faces, VertexOf vertex_of) {
+  using Face = typename Mesh::FaceType;
+  struct Seen {
+    uint32_t face; // core face index of the first face holding the edge
+    uint8_t at_a, at_b;
+    bool seam;
+  };
+  std::vector<uint32_t> out;
+  if (!d.any()) return out;
+  std::unordered_map<uint64_t, Seen> seen;
+  seen.reserve(faces.size() * 2);
+  for (uint32_t f = 0; f < faces.size(); ++f) {
+    const Face& face = m.face[faces[f]];
+    for (int c = 0; c < 3; ++c) {
+      uint32_t a = vertex_of(f, c), b = vertex_of(f, (c + 1) % 3);
+      uint64_t key = a < b ? uint64_t(a) << 32 | b : uint64_t(b) << 32 | a;
+      auto [it, first] = seen.emplace(key, Seen{f, uint8_t(c), uint8_t((c + 1) % 3), false});
+      if (first || it->second.seam) continue;
+      const Face& other = m.face[faces[it->second.face]];
+      // The other face's corners of the same two vertices (its edge may run either way).
+      int oa = it->second.at_a, ob = it->second.at_b;
+      if (vertex_of(it->second.face, oa) != a) std::swap(oa, ob);
+      bool same = detail::same_corner(d, face, c, other, oa) &&
+                  detail::same_corner(d, face, (c + 1) % 3, other, ob) &&
+                  (!d.face_color || detail::same_bits(face.cC(), other.cC()));
+      if (!same) {
+        it->second.seam = true;
+        out.insert(out.end(), {a, b});
+      }
+    }
+  }
+  return out;
+}
+
+// Copies corner `i` of `from` to corner `j` of `to`, and the face data when `whole_face`.
+template <class Face>
+void copy_corner(const CornerData& d, const Face& from, int i, Face& to, int j, bool whole_face) {
+  if (d.texcoord) to.WT(j) = from.cWT(i);
+  if (d.normal) to.WN(j) = from.cWN(i);
+  if (d.color) to.WC(j) = from.cWC(i);
+  if (whole_face && d.face_color) to.C() = from.cC();
+}
+
+} // namespace vrs_vcg
