@@ -80,6 +80,8 @@ std::string read_obj(const std::string& path, VcgDocument& doc) {
   std::vector<vcg::Color4b> color;
   std::vector<int> tris;
   std::vector<long> corner_uv, corner_normal; // per triangle corner, -1 when absent
+  std::vector<short> face_material;           // per triangle: index into doc.materials
+  short material = 0;
   std::string line;
   size_t line_no = 0;
   while (std::getline(in, line)) {
@@ -97,6 +99,14 @@ std::string read_obj(const std::string& path, VcgDocument& doc) {
       if (!(s >> u)) return "bad texture coordinate on line " + std::to_string(line_no);
       s >> v;
       uvs.emplace_back(u, v);
+    } else if (tag == "mtllib") {
+      std::getline(s >> std::ws, doc.material_library);
+    } else if (tag == "usemtl") {
+      std::string name;
+      std::getline(s >> std::ws, name);
+      auto it = std::find(doc.materials.begin(), doc.materials.end(), name);
+      material = short(it - doc.materials.begin());
+      if (it == doc.materials.end()) doc.materials.push_back(name);
     } else if (tag == "vn") {
       float x, y, z;
       if (!(s >> x >> y >> z)) return "bad normal on line " + std::to_string(line_no);
@@ -110,12 +120,14 @@ std::string read_obj(const std::string& path, VcgDocument& doc) {
           return "face on line " + std::to_string(line_no) + " names a missing vertex";
         poly.push_back(c);
       }
-      for (size_t j = 1; j + 1 < poly.size(); ++j)
+      for (size_t j = 1; j + 1 < poly.size(); ++j) {
+        face_material.push_back(material);
         for (size_t k : {size_t(0), j, j + 1}) {
           tris.push_back(int(poly[k][0]));
           corner_uv.push_back(poly[k][1]);
           corner_normal.push_back(poly[k][2]);
         }
+      }
     }
   }
   fill(doc, pos, color, tris);
@@ -132,7 +144,7 @@ std::string read_obj(const std::string& path, VcgDocument& doc) {
       long t = corner_uv[c];
       f.WT(c % 3).U() = t >= 0 ? uvs[t].X() : 0.0f;
       f.WT(c % 3).V() = t >= 0 ? uvs[t].Y() : 0.0f;
-      f.WT(c % 3).N() = 0;
+      f.WT(c % 3).N() = face_material[c / 3];
     }
     if (has_n)
       f.WN(c % 3) = corner_normal[c] >= 0 ? normals[corner_normal[c]] : vcg::Point3f(0, 0, 0);
@@ -259,6 +271,7 @@ std::string write_obj(const std::string& path, const VcgDocument& doc) {
   const vrs_vcg::CornerData d = doc.corner_data();
   const bool colors = doc.mask & vcg::tri::io::Mask::IOM_VERTCOLOR;
   char buf[128];
+  if (!doc.material_library.empty()) out << "mtllib " << doc.material_library << '\n';
   std::vector<int> index(m.vert.size(), -1);
   int next = 0;
   for (size_t v = 0; v < m.vert.size(); ++v) {
@@ -303,8 +316,12 @@ std::string write_obj(const std::string& path, const VcgDocument& doc) {
     n_of.push_back(nn);
   }
   size_t i = 0;
+  int material = -1;
   for (const Face& f : m.face) {
     if (f.IsD()) continue;
+    const int mat = d.texcoord ? f.cWT(0).N() : 0;
+    if (mat != material && mat >= 0 && size_t(mat) < doc.materials.size())
+      out << "usemtl " << doc.materials[size_t(material = mat)] << '\n';
     out << 'f';
     for (int c = 0; c < 3; ++c) {
       out << ' ' << index[vcg::tri::Index(m, f.cV(c))];

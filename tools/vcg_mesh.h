@@ -3,6 +3,7 @@
 #pragma once
 
 #include <string>
+#include <vector>
 
 #include <vcg/complex/complex.h>
 
@@ -27,6 +28,10 @@ class VcgDocument {
  public:
   VcgMesh mesh;
   int mask = 0; // vcg::tri::io::Mask bits of what the file held
+  // OBJ materials: the material library named by the file, and the names of the materials,
+  // indexed by the faces' texture index (WT(k).N()).
+  std::string material_library;
+  std::vector<std::string> materials;
 
   // Enables the optional components `mask` asks for (before faces are read into them).
   void enable(int mask_bits);

@@ -1,5 +1,6 @@
 """Our filter in the real pymeshlab (2025.7.post1: MeshLab 2025.07, double scalars), loaded with
 pymeshlab.load_plugin as a user would, called by its Python name with lowercased parameters."""
+import pathlib
 import subprocess
 import sys
 
@@ -30,7 +31,7 @@ def test_filter_is_listed_with_lowercased_parameters(plugin, meshes):
     values = ms.filter_parameter_values(FILTER)
     assert set(values) == {"targetfacenum", "targetperc", "targetvertnum", "maxfactor",
                            "autostop", "mode", "priority", "intervals", "preserveboundary",
-                           "selected", "autoclean", "lodlevels"}
+                           "selected", "autoclean", "lodlevels", "featureangle"}
     assert values["targetfacenum"] == ms.current_mesh().face_number() // 2
 
 
@@ -217,3 +218,40 @@ def test_example_script(plugin, meshes, tmp_path):
     assert run.returncode == 0, run.stderr
     assert "5558 -> 556 faces" in run.stdout and "stopped: target reached" in run.stdout
     assert out.stat().st_size > 0
+
+
+TEXTURED = pathlib.Path(__file__).resolve().parent.parent / "textured" / "textured_mesh.py"
+
+
+@pytest.mark.parametrize("source", ["charts.ply", "charts.obj", "regr01.obj", "spider.obj"])
+def test_textured_meshes_keep_their_texture_coordinates(plugin, cgal, tmp_path, source):
+    """Per-corner texture coordinates (PLY texcoord lists, OBJ vt) on every new face, each a
+    value its vertex had, all three from one input chart; seams counted in the dict."""
+    if source.startswith("charts"):
+        path = tmp_path / source
+        subprocess.run([sys.executable, str(TEXTURED), "make", str(cgal / "bunny00.off"),
+                        str(path), "2"], check=True, capture_output=True)
+    else:
+        path = pathlib.Path("/usr/share/assimp/models/OBJ") / source
+    ms = load(path)
+    faces = ms.current_mesh().face_number()
+    r = ms.apply_filter(FILTER, targetperc=0.1)
+    assert r["constrained_edges"] > 0
+    assert ms.current_mesh().has_wedge_tex_coord()
+    assert ms.current_mesh().face_number() < faces
+    out = tmp_path / ("out" + path.suffix)
+    ms.save_current_mesh(str(out))
+    run = subprocess.run([sys.executable, str(TEXTURED), "check", str(path), str(out)],
+                         capture_output=True, text=True)
+    assert run.returncode == 0, run.stdout + run.stderr
+    assert "100.00 %" in run.stdout
+
+
+def test_feature_angle_is_a_parameter_and_keeps_creases(plugin, meshes):
+    ms = load(meshes / "fandisk.off")
+    assert ms.filter_parameter_values(FILTER)["featureangle"] == 0
+    r = ms.apply_filter(FILTER, targetperc=0.05, featureangle=40.0)
+    assert r["constrained_edges"] > 100 and r["kept_constrained"] > 0
+    FAILED_MESHSETS.append(ms)
+    with pytest.raises(pymeshlab.PyMeshLabException):
+        ms.apply_filter(FILTER, featureangle=200.0)
