@@ -78,14 +78,16 @@ vrs::Options with(const std::vector<uint32_t>* edges, size_t faces) {
   return o;
 }
 
-// Grid charts: left of column `split` is chart 0, right chart 1.
-std::vector<int> left_right(const vrs::Mesh& m, float split) {
+// Chart of each face from its centroid's (x, y).
+template <class ChartOf> std::vector<int> charts_by_centroid(const vrs::Mesh& m, ChartOf chart_of) {
   std::vector<int> chart;
   for (size_t f = 0; f < m.face_count(); ++f) {
-    float x = 0;
-    for (int c = 0; c < 3; ++c)
-      x += m.positions[3 * m.triangles[3 * f + c]];
-    chart.push_back(x / 3 < split ? 0 : 1);
+    float x = 0, y = 0;
+    for (int c = 0; c < 3; ++c) {
+      x += m.positions[3 * m.triangles[3 * f + c]] / 3;
+      y += m.positions[3 * m.triangles[3 * f + c] + 1] / 3;
+    }
+    chart.push_back(chart_of(x, y));
   }
   return chart;
 }
@@ -105,7 +107,8 @@ TEST(Constraints, FanInsideOneChartCarriesItsCornersExactly) {
 
 TEST(Constraints, StraightSeamVertexGoesAlongTheSeamAndEachSideKeepsItsWedges) {
   vrs::Mesh in = vrs_test::grid(8), out = in;
-  std::vector<int> chart = left_right(in, 4.0f); // the seam is the column x = 4
+  // The seam is the column x = 4.
+  std::vector<int> chart = charts_by_centroid(in, [](float x, float) { return x < 4 ? 0 : 1; });
   std::vector<uint32_t> seams = seams_between(in, chart);
   ASSERT_EQ(seams.size(), 2u * 8);
   Wedges w = wedges_by_chart(in, chart);
@@ -129,15 +132,9 @@ TEST(Constraints, SeamCornerWithThreeSeamEdgesIsKept) {
   // Charts: x < 4 is chart 0; x > 4 is split at y = 4 into charts 1 and 2. Vertex (4, 4) has
   // three seam edges (up, down, right).
   vrs::Mesh in = vrs_test::grid(8), out = in;
-  std::vector<int> chart;
-  for (size_t f = 0; f < in.face_count(); ++f) {
-    float x = 0, y = 0;
-    for (int c = 0; c < 3; ++c) {
-      x += in.positions[3 * in.triangles[3 * f + c]];
-      y += in.positions[3 * in.triangles[3 * f + c] + 1];
-    }
-    chart.push_back(x / 3 < 4 ? 0 : y / 3 < 4 ? 1 : 2);
-  }
+  std::vector<int> chart = charts_by_centroid(in, [](float x, float y) {
+    return x < 4 ? 0 : y < 4 ? 1 : 2;
+  });
   std::vector<uint32_t> seams = seams_between(in, chart);
   Wedges w = wedges_by_chart(in, chart);
   vrs::Options o = with(&seams, 0);
@@ -151,15 +148,8 @@ TEST(Constraints, SeamCornerWithThreeSeamEdgesIsKept) {
 
 TEST(Constraints, CrossingSeamsKeepTheCrossing) {
   vrs::Mesh in = vrs_test::grid(8, 0.1f), out = in;
-  std::vector<int> chart;
-  for (size_t f = 0; f < in.face_count(); ++f) {
-    float x = 0, y = 0;
-    for (int c = 0; c < 3; ++c) {
-      x += in.positions[3 * in.triangles[3 * f + c]];
-      y += in.positions[3 * in.triangles[3 * f + c] + 1];
-    }
-    chart.push_back((x / 3 < 4 ? 0 : 1) + (y / 3 < 4 ? 0 : 2));
-  }
+  std::vector<int> chart =
+      charts_by_centroid(in, [](float x, float y) { return (x < 4 ? 0 : 1) + (y < 4 ? 0 : 2); });
   std::vector<uint32_t> seams = seams_between(in, chart);
   Wedges w = wedges_by_chart(in, chart);
   vrs::Options o = with(&seams, 0);
@@ -177,16 +167,8 @@ TEST(Constraints, BentSeamFollowsItsPolylineWithinItsPriority) {
   // A seam that zig-zags by one column along a flat grid: removal along it straightens it, so
   // its vertices go only as their distance to the chord allows (max factor 0.1 keeps the bends).
   vrs::Mesh in = vrs_test::grid(8), out = in;
-  std::vector<int> chart;
-  for (size_t f = 0; f < in.face_count(); ++f) {
-    float x = 0, y = 0;
-    for (int c = 0; c < 3; ++c) {
-      x += in.positions[3 * in.triangles[3 * f + c]];
-      y += in.positions[3 * in.triangles[3 * f + c] + 1];
-    }
-    int row = int(y / 3);
-    chart.push_back(x / 3 < 4 + (row % 2) ? 0 : 1);
-  }
+  std::vector<int> chart =
+      charts_by_centroid(in, [](float x, float y) { return x < 4 + (int(y) % 2) ? 0 : 1; });
   std::vector<uint32_t> seams = seams_between(in, chart);
   Wedges w = wedges_by_chart(in, chart);
   vrs::Options o = with(&seams, 0);
