@@ -28,6 +28,7 @@ METHODS = {
     "qecd_texture": ("meshing_decimation_quadric_edge_collapse_with_texture", {}),
 }
 SAMPLES = 4000
+FAILED = []  # MeshSets in which a filter raised (pymeshlab issues #384, #399)
 
 
 def closest_points(p, a, b, c):
@@ -121,7 +122,18 @@ def main():
                 target = round(faces * ratio)
                 ms.apply_filter("generate_copy_of_current_mesh")
                 start = time.perf_counter()
-                ms.apply_filter(name, targetfacenum=target, **extra)
+                try:
+                    ms.apply_filter(name, targetfacenum=target, **extra)
+                except pymeshlab.PyMeshLabException as e:  # a peer may refuse an input
+                    reason = str(e).split("Details: ")[-1].strip()
+                    rows.append(dict(mesh=source.name, ratio=ratio, method=method,
+                                     input_faces=faces, target=target,
+                                     faces=f"refused: {reason}", seconds="-",
+                                     hausdorff_max="-", hausdorff_mean="-", texture_mean="-",
+                                     texture_p95="-", corners_ok="-"))
+                    print(rows[-1], flush=True)
+                    FAILED.append(ms)  # pymeshlab crashes later if it is destroyed
+                    continue
                 seconds = time.perf_counter() - start
                 result = ms.current_mesh()
                 path = out / f"{source.stem}-{int(ratio * 100)}-{method}{source.suffix}"
