@@ -8,20 +8,20 @@
 #include <string>
 
 #include <vtkActor.h>
+#include <vtkCamera.h>
 #include <vtkCellArray.h>
 #include <vtkFloatArray.h>
 #include <vtkImageData.h>
-#include <vtkPointData.h>
-#include <vtkPoints.h>
-#include <vtkTexture.h>
-#include <vtkCamera.h>
 #include <vtkNew.h>
 #include <vtkPNGWriter.h>
+#include <vtkPointData.h>
+#include <vtkPoints.h>
 #include <vtkPolyData.h>
 #include <vtkPolyDataMapper.h>
 #include <vtkProperty.h>
 #include <vtkRenderWindow.h>
 #include <vtkRenderer.h>
+#include <vtkTexture.h>
 #include <vtkWindowToImageFilter.h>
 
 #include "mesh_io.h"
