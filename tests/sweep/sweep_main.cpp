@@ -65,7 +65,8 @@ int main(int argc, char** argv) {
   int failed = 0;
   for (const std::string& file : a.files) {
     vrs::Mesh in;
-    std::string why = vrs_sweep::read_mesh(file, in);
+    std::vector<uint32_t> seams;
+    std::string why = vrs_sweep::read_mesh(file, in, seams);
     if (!why.empty()) {
       std::printf("SKIP %s %s\n", file.c_str(), why.c_str());
       continue;
@@ -76,6 +77,10 @@ int main(int argc, char** argv) {
     for (double ratio : a.ratios) {
       vrs::Options o;
       o.target.ratio = ratio;
+      // Textured files: their seams constrained, and check_run then checks that no output
+      // face spans two charts.
+      o.constrained_edges = &seams;
+      o.corner_sources = !seams.empty();
       o.priority = a.priority;
       float last = -1;
       if (a.progress || a.cancel_at >= 0)
@@ -98,6 +103,9 @@ int main(int argc, char** argv) {
                   out.face_count(), rep.ok ? vrs::stop_reason_name(rep.stop) : "refused", seconds,
                   broken.empty() ? "ok" : "FAIL: ", broken.c_str());
       if (!rep.ok) std::printf("  message: %s\n", rep.message.c_str());
+      if (rep.constrained_edges)
+        std::printf("  seams: %zu constrained edges, %zu vertices kept by them\n",
+                    rep.constrained_edges, rep.kept_constrained);
       std::fflush(stdout);
     }
   }

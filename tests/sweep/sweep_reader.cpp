@@ -47,14 +47,16 @@ std::string read_with_assimp(const std::string& path, vrs::Mesh& out) {
 
 } // namespace
 
-std::string read_mesh(const std::string& path, vrs::Mesh& out) {
+std::string read_mesh(const std::string& path, vrs::Mesh& out, std::vector<uint32_t>& seams) {
   out = vrs::Mesh{};
+  seams.clear();
   const std::string e = extension(path);
   std::string why;
   if (e == "ply" || e == "off" || e == "obj" || e == "stl") {
     vrs_tool::LoadResult r = vrs_tool::load(path);
     if (!r.doc) return "unreadable: " + r.error;
     out = vrs_tool::to_core(*r.doc);
+    seams = vrs_tool::seams(*r.doc, out);
     vrs_tool::close(r.doc);
   } else {
     why = read_with_assimp(path, out);
