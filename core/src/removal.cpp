@@ -125,6 +125,8 @@ Reject plan_seam_removal(uint32_t v, const Ring& ring, int i, int j, Vec3 n, con
                          const Topology& topo, const uint32_t* tris, const float* surface_normals,
                          const RemovalLimits& limits, Patch& out, bool check_topology) {
   const int k = ring.verts;
+  // Two faces back to back (a fin: both sides one triangle) have no side left to fill.
+  if (k < 3) return RejectFold;
   Patch side;
   int count = 0;
   // Side 0 runs from ring[i] to ring[j] counter-clockwise, side 1 from ring[j] back to ring[i].
