@@ -63,8 +63,8 @@ class Simplifier {
   enum class Along : uint8_t { Free, Seam, Kept };
   Along along(uint32_t v, const Ring& ring, std::array<int, 2>& seam) const;
   // The evaluation of v's plane and factor; along a seam the factor also counts v's distance
-  // to the chord that replaces it. +inf factor when v must stay.
-  Evaluation evaluate_plane(uint32_t v, const Ring& ring) const;
+  // to the chord that replaces it (also put in `chord`, else 0). +inf factor when v must stay.
+  Evaluation evaluate_plane(uint32_t v, const Ring& ring, double* chord = nullptr) const;
   // Priority of v with its current ring (the paper's factor or the planned patch's local
   // error), or +inf when v must stay.
   double evaluate(uint32_t v, const Ring& ring);
@@ -161,23 +161,26 @@ Simplifier::Along Simplifier::along(uint32_t v, const Ring& ring, std::array<int
   return constraints_.seam_of(v, ring, seam[0], seam[1]) ? Along::Seam : Along::Kept;
 }
 
-Evaluation Simplifier::evaluate_plane(uint32_t v, const Ring& ring) const {
+Evaluation Simplifier::evaluate_plane(uint32_t v, const Ring& ring, double* chord) const {
   Evaluation e = eval_.evaluate(v, ring, opt_.simplify_boundary);
   std::array<int, 2> seam;
+  double to_chord = 0;
   switch (along(v, ring, seam)) {
   case Along::Free: break;
   case Along::Kept: e.factor = std::numeric_limits<double>::infinity(); break;
   case Along::Seam: // the polyline's own deviation, which a flat neighbourhood does not show
-    e.factor =
-        std::max(e.factor, distance_to_line(eval_.position(v), eval_.position(ring.v[seam[0]]),
-                                            eval_.position(ring.v[seam[1]])));
+    to_chord = distance_to_line(eval_.position(v), eval_.position(ring.v[seam[0]]),
+                                eval_.position(ring.v[seam[1]]));
+    e.factor = std::max(e.factor, to_chord);
     break;
   }
+  if (chord) *chord = to_chord;
   return e;
 }
 
 double Simplifier::evaluate(uint32_t v, const Ring& ring) {
-  Evaluation e = evaluate_plane(v, ring);
+  double chord = 0;
+  Evaluation e = evaluate_plane(v, ring, &chord);
   if (opt_.priority == Priority::Factor || !std::isfinite(e.factor)) return e.factor;
   Patch patch;
   // The mesh look-ups wait for the pop, where the plan is made again in full.
@@ -186,12 +189,7 @@ double Simplifier::evaluate(uint32_t v, const Ring& ring) {
     ++rep_.rejected[why]; // not queued; evaluated again when its ring changes
     return std::numeric_limits<double>::infinity();
   }
-  double error = patch_error(v, ring, patch, eval_, reference_area_);
-  std::array<int, 2> seam;
-  if (along(v, ring, seam) == Along::Seam)
-    error = std::max(error, distance_to_line(eval_.position(v), eval_.position(ring.v[seam[0]]),
-                                             eval_.position(ring.v[seam[1]])));
-  return error;
+  return std::max(patch_error(v, ring, patch, eval_, reference_area_), chord);
 }
 
 Reject Simplifier::plan(uint32_t v, const Ring& ring, const Evaluation& e, Patch& patch,
