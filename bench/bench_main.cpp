@@ -1,15 +1,18 @@
 // vrs_bench: every method on the same mesh and targets, one CSV line per run.
 //   vrs_bench MESH [--name N] [--ratios 0.5,0.1,0.01] [--methods ours,qecd,meshopt,vtk]
 //             [--samples S] [--header] [--save DIR]
-//   vrs_bench --compare A B [--samples S]   symmetric error of B against A: "max mean rms"
+//   vrs_bench --compare A B [--samples S]   B against A: "max mean rms fold_area"
+//   vrs_bench --info MESH                      "faces open" (open: 1 when it has a border)
 //   vrs_bench --loop MESH LEVELS OUT.ply       Loop subdivision (large inputs)
 //   vrs_bench --terrain K OUT.ply              (2^K + 1)^2 fractal terrain
 // Methods: ours (defaults) with suffixes -factor / -local (priority), -linear / -log (mapping),
-// -heap (exact queue), -intN (N intervals), combinable; qecd, meshopt, vtk. Each run is a child
-// process, so memory high-water marks do not carry over from one run to the next.
+// -heap (exact queue), -intN (N intervals), -projection (the paper's filling only), -boundary
+// (boundary simplified), combinable; qecd, qecd-topology (Preserve Topology on), meshopt, vtk. Each
+// run is a child process, so memory high-water marks do not carry over from one run to the next.
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <algorithm>
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
@@ -36,6 +39,8 @@ bool run_method(const std::string& method, const vrs::Mesh& in, size_t target,
   using namespace vrs_bench;
   if (method == "qecd")
     r = run_qecd(in, target);
+  else if (method == "qecd-topology")
+    r = run_qecd(in, target, /*preserve_topology=*/true);
   else if (method == "meshopt")
     r = run_meshopt(in, target);
   else if (method == "vtk")
@@ -55,6 +60,10 @@ bool run_method(const std::string& method, const vrs::Mesh& in, size_t target,
         o.mapping = vrs::IntervalMapping::Linear;
       else if (p == "log")
         o.mapping = vrs::IntervalMapping::Logarithmic;
+      else if (p == "projection")
+        o.fill = vrs::Fill::Projection;
+      else if (p == "boundary")
+        o.simplify_boundary = true;
       else if (p == "heap")
         o.queue = vrs::QueueKind::Heap;
       else if (p.rfind("int", 0) == 0 && p.size() > 3)
@@ -88,7 +97,33 @@ int compare(int argc, char** argv) {
   vrs::Mesh a, b;
   if (!load_core(argv[2], a) || !load_core(argv[3], b)) return 1;
   vrs_bench::SurfaceError e = vrs_bench::surface_error(a, b, samples);
-  std::printf("%.6g %.6g %.6g\n", e.max, e.mean, e.rms);
+  std::printf("%.6g %.6g %.6g %.6g\n", e.max, e.mean, e.rms,
+              vrs_bench::fold_over_share(a, b, samples));
+  return 0;
+}
+
+// "faces open": the face count, and 1 when some edge has a single face (the mesh has a border).
+int info(int argc, char** argv) {
+  if (argc < 3) return 2;
+  vrs::Mesh m;
+  if (!load_core(argv[2], m) || m.face_count() == 0) return 1;
+  std::vector<uint64_t> edges;
+  const auto& t = m.triangles;
+  for (size_t i = 0; i < t.size(); i += 3)
+    for (int c = 0; c < 3; ++c) {
+      uint64_t a = t[i + c], b = t[i + (c + 1) % 3];
+      edges.push_back(std::min(a, b) << 32 | std::max(a, b));
+    }
+  std::sort(edges.begin(), edges.end());
+  bool open = false;
+  for (size_t i = 0; i < edges.size() && !open;) {
+    size_t j = i;
+    while (j < edges.size() && edges[j] == edges[i])
+      ++j;
+    open = j - i == 1;
+    i = j;
+  }
+  std::printf("%zu %d\n", m.face_count(), open ? 1 : 0);
   return 0;
 }
 
@@ -124,6 +159,7 @@ int main(int argc, char** argv) {
     return 2;
   }
   if (std::string(argv[1]) == "--compare") return compare(argc, argv);
+  if (std::string(argv[1]) == "--info") return info(argc, argv);
   if (std::string(argv[1]) == "--loop" || std::string(argv[1]) == "--terrain")
     return make(argc, argv);
   std::string path = argv[1], name;
@@ -161,7 +197,7 @@ int main(int argc, char** argv) {
 
   if (header)
     std::printf("mesh,input_faces,ratio,target_faces,method,output_faces,output_vertices,seconds,"
-                "peak_mb,extra_mb,error_max,error_mean,error_rms,note\n");
+                "peak_mb,extra_mb,error_max,error_mean,error_rms,fold_area,note\n");
   std::fflush(stdout);
   int failures = 0;
   for (const std::string& ratio : ratios) {
@@ -177,10 +213,11 @@ int main(int argc, char** argv) {
         if (!save_dir.empty())
           vrs_bench::write_ply(r.mesh, save_dir + "/" + name + "_" + ratio + "_" + method + ".ply");
         vrs_bench::SurfaceError e = vrs_bench::surface_error(in, r.mesh, samples);
-        std::printf("%s,%zu,%s,%zu,%s,%zu,%zu,%.6f,%.1f,%.1f,%.6g,%.6g,%.6g,%s\n", name.c_str(),
-                    in.face_count(), ratio.c_str(), target, method.c_str(), r.mesh.face_count(),
-                    r.mesh.vertex_count(), r.seconds, r.peak_mb, r.extra_mb, e.max, e.mean, e.rms,
-                    r.note.c_str());
+        double folds = vrs_bench::fold_over_share(in, r.mesh, samples);
+        std::printf("%s,%zu,%s,%zu,%s,%zu,%zu,%.6f,%.1f,%.1f,%.6g,%.6g,%.6g,%.6g,%s\n",
+                    name.c_str(), in.face_count(), ratio.c_str(), target, method.c_str(),
+                    r.mesh.face_count(), r.mesh.vertex_count(), r.seconds, r.peak_mb, r.extra_mb,
+                    e.max, e.mean, e.rms, folds, r.note.c_str());
         std::fflush(stdout);
         _exit(0);
       }
@@ -190,7 +227,7 @@ int main(int argc, char** argv) {
         std::fprintf(stderr, "vrs_bench: %s on %s at %s failed (status %d)\n", method.c_str(),
                      name.c_str(), ratio.c_str(), status);
         // The row stays in the table: a peer that crashes on an input is a result too.
-        std::printf("%s,%zu,%s,%zu,%s,,,,,,,,,failed (%s %d)\n", name.c_str(), in.face_count(),
+        std::printf("%s,%zu,%s,%zu,%s,,,,,,,,,,failed (%s %d)\n", name.c_str(), in.face_count(),
                     ratio.c_str(), target, method.c_str(), WIFSIGNALED(status) ? "signal" : "exit",
                     WIFSIGNALED(status) ? WTERMSIG(status) : WEXITSTATUS(status));
         std::fflush(stdout);

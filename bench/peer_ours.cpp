@@ -1,4 +1,5 @@
 #include <chrono>
+#include <string>
 
 #include "peers.h"
 
@@ -14,7 +15,12 @@ PeerResult run_ours(const vrs::Mesh& in, size_t target_faces, vrs::Options o) {
   vrs::Report rep = vrs::simplify(r.mesh, o);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   probe.finish(r);
-  if (!rep.target_reached) r.note = vrs::stop_reason_name(rep.stop);
+  if (!rep.target_reached) {
+    // The CSV's last column: the reason and what kept the rest, without commas.
+    r.note = std::string(vrs::stop_reason_name(rep.stop)) + ": " + rep.stop_detail;
+    for (char& c : r.note)
+      if (c == ',') c = '/';
+  }
   return r;
 }
 

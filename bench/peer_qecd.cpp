@@ -40,7 +40,7 @@ class Collapse : public vcg::tri::TriEdgeCollapseQuadric<BenchMesh, VertexPair, 
 
 } // namespace
 
-PeerResult run_qecd(const vrs::Mesh& in, size_t target_faces) {
+PeerResult run_qecd(const vrs::Mesh& in, size_t target_faces, bool preserve_topology) {
   BenchMesh m;
   to_vcg(in, m);
   PeerResult r;
@@ -53,7 +53,7 @@ PeerResult run_qecd(const vrs::Mesh& in, size_t target_faces) {
   pp.QualityThr = 0.3;
   pp.PreserveBoundary = false;
   pp.BoundaryQuadricWeight = pp.BoundaryQuadricWeight * 0.5; // "BoundaryWeight" = 0.5
-  pp.PreserveTopology = false;
+  pp.PreserveTopology = preserve_topology;
   pp.QualityWeight = false;
   pp.NormalCheck = false;
   pp.OptimalPlacement = true;

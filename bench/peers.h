@@ -31,7 +31,9 @@ class MemoryProbe {
 PeerResult run_ours(const vrs::Mesh& in, size_t target_faces, vrs::Options options);
 // MeshLab's Quadric Edge Collapse Decimation: vcglib's TriEdgeCollapseQuadric with the filter's
 // dialog defaults and its post-simplification cleaning (filter_meshing 2020.09).
-PeerResult run_qecd(const vrs::Mesh& in, size_t target_faces);
+// `preserve_topology`: the dialog's "Preserve Topology" (off by default), which refuses the
+// collapses that would change the genus, as ours never does.
+PeerResult run_qecd(const vrs::Mesh& in, size_t target_faces, bool preserve_topology = false);
 // meshoptimizer's meshopt_simplify (keeps a subset of the vertices), no error limit.
 PeerResult run_meshopt(const vrs::Mesh& in, size_t target_faces);
 // VTK's vtkDecimatePro (Schroeder's vertex removal) with PreserveTopology on, as ours.

@@ -4,7 +4,11 @@
 
 #include "bench_mesh.h" // vcglib's complex.h first: point_sampling.h depends on it
 
+#include <vcg/complex/algorithms/closest.h>
 #include <vcg/complex/algorithms/point_sampling.h>
+#include <vcg/space/index/grid_static_ptr.h>
+
+#include <random>
 
 namespace vrs_bench {
 
@@ -51,6 +55,48 @@ SurfaceError surface_error(const vrs::Mesh& a, const vrs::Mesh& b, size_t sample
   e.mean = (ab.sum + ba.sum) / double(e.samples) / d;
   e.rms = std::sqrt((ab.sum_sq + ba.sum_sq) / double(e.samples)) / d;
   return e;
+}
+
+double fold_over_share(const vrs::Mesh& original, const vrs::Mesh& simplified, size_t samples) {
+  BenchMesh a;
+  to_vcg(original, a);
+  vcg::tri::UpdateNormal<BenchMesh>::PerFaceNormalized(a);
+  vcg::Box3f box = a.bbox;
+  box.Offset(0.01f * box.Diag());
+  vcg::GridStaticPtr<BFace, float> grid;
+  grid.Set(a.face.begin(), a.face.end(), box);
+  // Samples spread by area over the simplified faces (cumulative area, fixed seed).
+  const auto& p = simplified.positions;
+  const auto& t = simplified.triangles;
+  const size_t n = t.size() / 3;
+  std::vector<double> cumulative(n + 1, 0.0);
+  auto at = [&](uint32_t v) { return vcg::Point3f(p[3 * v], p[3 * v + 1], p[3 * v + 2]); };
+  for (size_t f = 0; f < n; ++f) {
+    vcg::Point3f x = at(t[3 * f]), y = at(t[3 * f + 1]), z = at(t[3 * f + 2]);
+    double area = ((y - x) ^ (z - x)).Norm() * 0.5;
+    cumulative[f + 1] = cumulative[f] + (std::isfinite(area) ? area : 0.0);
+  }
+  if (!(cumulative[n] > 0) || a.fn == 0) return 0.0;
+  std::mt19937_64 rng(2026);
+  std::uniform_real_distribution<double> unit(0.0, 1.0);
+  size_t folded = 0;
+  const float reach = a.bbox.Diag();
+  for (size_t s = 0; s < samples; ++s) {
+    const double r = unit(rng) * cumulative[n];
+    size_t f =
+        size_t(std::upper_bound(cumulative.begin(), cumulative.end(), r) - cumulative.begin());
+    f = std::min(n, std::max<size_t>(f, 1)) - 1;
+    vcg::Point3f x = at(t[3 * f]), y = at(t[3 * f + 1]), z = at(t[3 * f + 2]);
+    double b1 = unit(rng), b2 = unit(rng);
+    if (b1 + b2 > 1) b1 = 1 - b1, b2 = 1 - b2;
+    vcg::Point3f q = x + (y - x) * float(b1) + (z - x) * float(b2);
+    vcg::Point3f normal = ((y - x) ^ (z - x)).Normalize();
+    float dist = reach;
+    vcg::Point3f closest;
+    BFace* nearest = vcg::tri::GetClosestFaceBase(a, grid, q, reach, dist, closest);
+    if (nearest && normal.dot(nearest->N()) < 0) ++folded;
+  }
+  return double(folded) / double(samples);
 }
 
 } // namespace vrs_bench

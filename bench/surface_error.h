@@ -19,4 +19,9 @@ struct SurfaceError {
 // `samples_per_side` area-uniform samples on each surface (plus its vertices).
 SurfaceError surface_error(const vrs::Mesh& a, const vrs::Mesh& b, size_t samples_per_side);
 
+// Fold-overs: the share of `simplified`'s area (area-uniform samples, fixed seed) whose face
+// turns more than 90° from the `original` face nearest to the sample: the output facing against
+// the surface it stands for. 0 for an untouched mesh.
+double fold_over_share(const vrs::Mesh& original, const vrs::Mesh& simplified, size_t samples);
+
 } // namespace vrs_bench

@@ -19,7 +19,8 @@ int main(int argc, char** argv) {
     uint32_t param;
   };
   // f0: target kind | mode << 3 | heap 0x20 | log 0x40 | boundary 0x80;
-  // f1: factor 1 | raw 2 | locks 4 | cancel 8 | constrained edges 32 | feature angle 64.
+  // f1: factor 1 | raw 2 | locks 4 | cancel 8 | constrained edges 32 | feature angle 64 |
+  // projection fill only 128.
   const Variant variants[] = {
       {2, 0, 0x19999999u},         // ratio 10 %, local error
       {2 | 0x80, 1, 0x028f5c28u},  // ratio 1 %, boundary too, paper's factor

@@ -26,6 +26,8 @@ const char* kUsage =
     "  --intervals N                   hash-table intervals (default 1000)\n"
     "  --priority local-error|factor   sort by the local error of the planned re-triangulation\n"
     "                                  (default) or by the paper's evaluation factor\n"
+    "  --fill best|projection          fill each hole with the best of the projection and the\n"
+    "                                  fans (default) or with the paper's projection only\n"
     "  --mapping linear|log            factor -> interval mapping (default linear)\n"
     "  --queue intervals|heap          hash table (default) or exact heap (reference)\n"
     "  --simplify-boundary             also remove boundary vertices (default: kept)\n"
@@ -65,12 +67,13 @@ void print_json(const vrs::Report& r, double seconds_simplify, double seconds_to
               "\"max_removed_factor\":%.9g,\"kept\":{\"boundary\":%zu,\"nonmanifold\":%zu,"
               "\"locked\":%zu,\"high_valence\":%zu,\"constrained\":%zu},"
               "\"constrained_edges\":%zu,\"input_issues\":{\"degenerate_faces\":%zu,"
-              "\"nonfinite_vertices\":%zu,\"unreferenced_vertices\":%zu}}\n",
+              "\"nonfinite_vertices\":%zu,\"unreferenced_vertices\":%zu},"
+              "\"relaxed_removals\":%zu,\"stop_detail\":\"%s\"}\n",
               r.rejected_total(), vrs::stop_reason_name(r.stop),
               r.target_reached ? "true" : "false", r.max_removed_factor, r.kept_boundary,
               r.kept_nonmanifold, r.kept_locked, r.kept_high_valence, r.kept_constrained,
               r.constrained_edges, r.dropped_degenerate_faces, r.nonfinite_vertices,
-              r.unreferenced_vertices);
+              r.unreferenced_vertices, r.relaxed_removals, r.stop_detail.c_str());
 }
 
 void print_text(const vrs::Report& r, double seconds_simplify, double seconds_total) {
@@ -87,6 +90,11 @@ void print_text(const vrs::Report& r, double seconds_simplify, double seconds_to
     std::printf("%s%s %zu", i ? ", " : "", vrs::reject_name(vrs::Reject(i)), r.rejected[i]);
   std::printf(")\nstopped: %s, target %s\n", vrs::stop_reason_name(r.stop),
               r.target_reached ? "reached" : "NOT reached");
+  if (!r.stop_detail.empty()) std::printf("why:     %s\n", r.stop_detail.c_str());
+  if (r.relaxed_removals)
+    std::printf("relaxed: %zu removals after the input-normal veto was lifted to reach the "
+                "target\n",
+                r.relaxed_removals);
   if (!r.message.empty()) std::printf("note:    %s\n", r.message.c_str());
 }
 
@@ -144,6 +152,9 @@ int main(int argc, char** argv) {
     } else if (a == "--queue") {
       if (!(v = value()) || !vrs::parse_queue(v, opt.queue))
         return usage_error("--queue must be intervals or heap");
+    } else if (a == "--fill") {
+      if (!(v = value()) || !vrs::parse_fill(v, opt.fill))
+        return usage_error("--fill must be best or projection");
     } else if (a == "--priority") {
       if (!(v = value()) || !vrs::parse_priority(v, opt.priority))
         return usage_error("--priority must be factor or local-error");

@@ -109,6 +109,18 @@ double patch_error(uint32_t v, const Ring& ring, const Patch& patch, const Evalu
   return std::max(worst, to_new) * std::sqrt(area / reference_area);
 }
 
+double drop_height(uint32_t v, const Patch& patch, const Evaluator& eval) {
+  const Vec3 c = eval.position(v);
+  double worst = 0; // squared: one square root per patch, none per triangle
+  for (int t = 0; t < patch.count; ++t) {
+    Vec3 x = patch.q[patch.tri[t][0]], y = patch.q[patch.tri[t][1]], z = patch.q[patch.tri[t][2]];
+    Vec3 n = cross(y - x, z - x);
+    double h = dot(c - x, n), nn = dot(n, n);
+    if (nn > 0) worst = std::max(worst, h * h / nn);
+  }
+  return std::sqrt(worst);
+}
+
 double mean_triangle_area(const float* pos, const std::vector<uint32_t>& tris) {
   double sum = 0;
   size_t n = 0;

@@ -22,6 +22,10 @@ double point_triangle_distance(Vec3 p, Vec3 a, Vec3 b, Vec3 c);
 double patch_error(uint32_t v, const Ring& ring, const Patch& patch, const Evaluator& eval,
                    double reference_area);
 
+// How far v drops onto the planes of the patch's triangles, at most: an O(k) estimate of
+// patch_error's main term, used to rank the ways to fill one hole (same weight for all).
+double drop_height(uint32_t v, const Patch& patch, const Evaluator& eval);
+
 // Mean area of the finite triangles (1 when there is none): the weight's reference.
 double mean_triangle_area(const float* positions, const std::vector<uint32_t>& triangles);
 

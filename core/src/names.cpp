@@ -10,6 +10,7 @@ const char* reject_name(Reject r) {
   case RejectTriangle: return "triangle_exists";
   case RejectFlip: return "flip";
   case RejectDegenerate: return "degenerate";
+  case RejectFoldOver: return "fold_over";
   default: return "unknown";
   }
 }
@@ -77,6 +78,20 @@ bool parse_priority(const std::string& s, Priority& out) {
 
 const char* priority_name(Priority p) {
   return p == Priority::LocalError ? "local-error" : "factor";
+}
+
+bool parse_fill(const std::string& s, Fill& out) {
+  if (s == "best")
+    out = Fill::Best;
+  else if (s == "projection")
+    out = Fill::Projection;
+  else
+    return false;
+  return true;
+}
+
+const char* fill_name(Fill f) {
+  return f == Fill::Best ? "best" : "projection";
 }
 
 } // namespace vrs

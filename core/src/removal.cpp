@@ -6,16 +6,6 @@ namespace vrs {
 
 namespace {
 
-// Is (a, b) an edge of the ring's polygon that already exists in the mesh? For an open ring the
-// closing edge (last, first) is new unless `closing_exists`.
-bool is_ring_edge(const Ring& ring, int a, int b, bool closing_exists) {
-  int k = ring.verts;
-  bool closed = ring.closed() || closing_exists;
-  if ((a + 1) % k == b && (closed || a + 1 < k)) return true;
-  if ((b + 1) % k == a && (closed || b + 1 < k)) return true;
-  return false;
-}
-
 // The ring's positions and their projections on the plane of `n`, relative to v.
 void project(uint32_t v, const Ring& ring, Vec3 n, const Evaluator& eval, Patch& out) {
   plane_basis(n, out.u, out.w);
@@ -60,75 +50,67 @@ bool star_direction(uint32_t v, const Ring& ring, const Evaluator& eval, Vec3& o
   return false;
 }
 
-Reject plan_removal(uint32_t v, const Ring& ring, Vec3 n, const Evaluator& eval,
-                    const Topology& topo, const uint32_t* tris, const float* surface_normals,
-                    const RemovalLimits& limits, Patch& out, bool check_topology, OpenRing open) {
+Reject Planner::plan(uint32_t v, const Ring& ring, Vec3 n, Patch& out, double& cost,
+                     bool check_topology, OpenRing open) const {
   const int k = ring.verts;
   if (k < 3) return RejectFold;
-  project(v, ring, n, eval, out); // the plan keeps them for patch_error
-  const auto& q = out.q;
-  const auto& p = out.p;
-  const Vec2 o{0, 0};
-
-  // The old fan must project without folds: the ring is then a star-shaped simple polygon
-  // around the vertex and any triangulation of it covers the same region.
-  for (int i = 0; i < ring.faces; ++i)
-    if (!(orient2d(o, p[i], p[(i + 1) % k]) > 0)) return RejectFold;
-  if (!ring.closed()) {
-    // Open fan: cutting the vertex off must leave a simple polygon. At a convex corner the
-    // chain must lie beyond the chord; at a reflex one (seams only) the chord lies in the
-    // other side's wedge and cannot meet the chain, which is star-shaped around the vertex.
-    const bool convex = orient2d(p[k - 1], o, p[0]) >= 0; // straight is fine
-    if (!convex && open == OpenRing::Border) return RejectFold;
-    for (int j = 1; j + 1 < k && convex; ++j)
-      if (!(orient2d(p[k - 1], p[0], p[j]) > 0)) return RejectFold;
-  }
-
-  if (ring.closed() && is_convex(p.data(), k)) {
-    triangulate_fan(p.data(), q.data(), n, k, out);
-  } else if (!triangulate_ears(p.data(), q.data(), n, k, out)) {
-    return RejectFold;
-  }
-
-  for (int t = 0; t < out.count; ++t)
-    for (int c = 0; c < 3; ++c)
-      out.from[t][c] = static_cast<uint8_t>(std::min(int(out.tri[t][c]), ring.faces - 1));
-  // Topology first (it cannot change with the projection), then shape.
-  for (int t = 0; t < out.count && check_topology; ++t) {
-    const auto& tri = out.tri[t];
-    if (topo.has_triangle(ring.v[tri[0]], ring.v[tri[1]], ring.v[tri[2]], tris))
-      return RejectTriangle;
-    for (int e = 0; e < 3; ++e) {
-      int a = tri[e], b = tri[(e + 1) % 3];
-      if (!is_ring_edge(ring, a, b, open == OpenRing::SeamSideOnEdge) &&
-          topo.has_edge(ring.v[a], ring.v[b], tris))
-        return RejectEdge;
+  project(v, ring, n, *eval_, out);
+  const int candidates = candidate_count(ring, fans_);
+  // Every candidate gets the cheap estimate; in its order, the first one no veto refuses is
+  // planned and priced exactly. (Pricing each exactly chose about as well on the benchmark's
+  // meshes and cost 2.5x the time.) The projection's triangles are kept aside: ear clipping
+  // is the one candidate that is dear to make twice.
+  std::array<double, kMaxRing + 2> estimate;
+  std::array<uint8_t, kMaxRing + 2> order;
+  std::array<std::array<uint8_t, 3>, kMaxRing> projected;
+  int projected_count = -1, m = 0;
+  for (int c = 0; c < candidates; ++c) {
+    if (!fill_candidate(ring, open, c, out)) {
+      // On a fixed plane a fan triangulates the projected ring only where the ring is the
+      // simple polygon the projection checks (then each of its triangles must face the plane).
+      if (on_plane_) return RejectFold;
+      continue;
     }
-  }
-  for (int t = 0; t < out.count; ++t) {
-    const auto& tri = out.tri[t];
-    Vec3 a = q[tri[0]], b = q[tri[1]], d = q[tri[2]];
-    if (triangle_quality(a, b, d) < limits.min_quality) return RejectDegenerate;
-    Vec3 face = normalized(cross(b - a, d - a));
-    if (dot(face, n) < limits.min_normal_cos) return RejectFlip;
-    Vec3 original;
-    for (int c = 0; c < 3; ++c) {
-      const float* sn = surface_normals + 3 * size_t(ring.v[tri[c]]);
-      original = original + Vec3{sn[0], sn[1], sn[2]};
+    if (c == 0) {
+      projected = out.tri;
+      projected_count = out.count;
     }
-    if (!(dot(face, original) > 0)) return RejectFlip;
+    estimate[c] = candidates > 1 ? price_.estimate(v, ring, out) : 0.0;
+    order[m++] = uint8_t(c);
   }
-  return RejectCount;
+  std::stable_sort(order.begin(), order.begin() + m,
+                   [&](uint8_t x, uint8_t y) { return estimate[x] < estimate[y]; });
+  Reject first_why = RejectCount;
+  for (int r = 0; r < m; ++r) {
+    const int c = order[r];
+    if (c == 0) {
+      out.tri = projected;
+      out.count = projected_count;
+      set_corner_faces(ring, out);
+    } else {
+      fill_candidate(ring, open, c, out);
+    }
+    // Topology first (it cannot change with the projection), then shape.
+    Reject why = check_topology ? veto_topology(ring, out, open, *topo_, tris_) : RejectCount;
+    if (why == RejectCount)
+      why = veto_shape(v, ring, out, *eval_, normals_, *limits_, c == 0 || on_plane_);
+    if (why == RejectCount) {
+      cost = price_.exact(v, ring, out);
+      return RejectCount;
+    }
+    if (first_why == RejectCount) first_why = why;
+  }
+  return first_why == RejectCount ? RejectFold : first_why;
 }
 
-Reject plan_seam_removal(uint32_t v, const Ring& ring, int i, int j, Vec3 n, const Evaluator& eval,
-                         const Topology& topo, const uint32_t* tris, const float* surface_normals,
-                         const RemovalLimits& limits, Patch& out, bool check_topology) {
+Reject Planner::plan_seam(uint32_t v, const Ring& ring, int i, int j, Vec3 n, Patch& out,
+                          double& cost, bool check_topology) const {
   const int k = ring.verts;
   // Two faces back to back (a fin: both sides one triangle) have no side left to fill.
   if (k < 3) return RejectFold;
   Patch side;
   int count = 0;
+  cost = 0;
   // Side 0 runs from ring[i] to ring[j] counter-clockwise, side 1 from ring[j] back to ring[i].
   for (int s = 0; s < 2; ++s) {
     const int first = s == 0 ? i : j, m = (s == 0 ? j - i : k - j + i) + 1;
@@ -141,10 +123,11 @@ Reject plan_seam_removal(uint32_t v, const Ring& ring, int i, int j, Vec3 n, con
       sub.v[r] = ring.v[(first + r) % k];
     for (int r = 0; r + 1 < m; ++r)
       sub.f[r] = ring.f[(first + r) % k];
-    Reject why =
-        plan_removal(v, sub, n, eval, topo, tris, surface_normals, limits, side, check_topology,
-                     on_edge ? OpenRing::SeamSideOnEdge : OpenRing::SeamSide);
+    double side_cost = 0;
+    Reject why = plan(v, sub, n, side, side_cost, check_topology,
+                      on_edge ? OpenRing::SeamSideOnEdge : OpenRing::SeamSide);
     if (why != RejectCount) return why;
+    cost = std::max(cost, side_cost);
     for (int t = 0; t < side.count; ++t, ++count)
       for (int c = 0; c < 3; ++c) {
         out.tri[count][c] = static_cast<uint8_t>((first + side.tri[t][c]) % k);
@@ -152,7 +135,7 @@ Reject plan_seam_removal(uint32_t v, const Ring& ring, int i, int j, Vec3 n, con
       }
   }
   out.count = count;
-  project(v, ring, n, eval, out);
+  project(v, ring, n, *eval_, out);
   return RejectCount;
 }
 

@@ -19,6 +19,10 @@ namespace {
 
 constexpr uint8_t kFlagLocked = 1;  // never removed: user lock, or next to a NaN/inf position
 constexpr uint8_t kFlagRemoved = 2; // gone from the mesh
+// Bits 2-4: the vertex's last plan's Reject (RejectCount: none), for Report::stop_detail.
+constexpr int kRefusedShift = 2;
+constexpr uint8_t kRefusedMask = 7 << kRefusedShift;
+static_assert(RejectCount <= 7, "a Reject must fit the flag bits");
 
 // Drops faces with a repeated corner: they have no area and no place in a manifold fan.
 // `source[f]` becomes the input index of kept face f.
@@ -49,10 +53,13 @@ class Simplifier {
               mesh.positions.data()) {
     limits_.min_normal_cos = std::cos(opt.max_normal_angle_deg * 3.14159265358979323846 / 180);
   }
+  Simplifier(const Simplifier&) = delete;
 
   void prepare();
   template <class Queue> void run(Queue& queue);
   void compact();
+  // Why the remaining vertices stay, when the target was not met (Report::stop_detail).
+  std::string explain_stop() const;
 
  private:
   bool removable(VertexKind k) const {
@@ -68,12 +75,18 @@ class Simplifier {
   // Priority of v with its current ring (the paper's factor or the planned patch's local
   // error), or +inf when v must stay.
   double evaluate(uint32_t v, const Ring& ring);
-  // Plans v's removal on its evaluated plane, then on a fallback direction; RejectCount = ok.
-  Reject plan(uint32_t v, const Ring& ring, const Evaluation& e, Patch& patch,
+  // Plans v's removal on its evaluated plane, then on a fallback direction; RejectCount = ok,
+  // with the chosen patch's local error in `cost`.
+  Reject plan(uint32_t v, const Ring& ring, const Evaluation& e, Patch& patch, double& cost,
               bool check_topology = true);
+  static double price(const void* self, uint32_t v, const Ring& ring, const Patch& patch);
+  static double estimate(const void* self, uint32_t v, const Ring& ring, const Patch& patch);
   bool target_met() const;
   float progress_fraction(size_t queued, size_t queued0) const;
   template <class Queue> void commit(uint32_t v, const Ring& ring, const Patch& patch, Queue& q);
+  // The last resort when a count target is not met and nothing is left to remove: lifts the
+  // input-normal veto and queues every removable vertex again. False if it was done already.
+  template <class Queue> bool relax(Queue& queue);
 
   Mesh& mesh_;
   const Options& opt_;
@@ -81,9 +94,14 @@ class Simplifier {
   Evaluator eval_;
   RemovalLimits limits_;
   Topology topo_;
+  Planner planner_{eval_, topo_, mesh_.triangles.data(), nullptr, limits_, {}, false};
   std::vector<float> factor_;
   std::vector<float> normals_; // unit vertex normals of the input surface, 3 a vertex
   std::vector<uint8_t> flags_;
+  void set_refused(uint32_t v, Reject why) {
+    flags_[v] = uint8_t((flags_[v] & ~kRefusedMask) | (why << kRefusedShift));
+  }
+  Reject refused(uint32_t v) const { return Reject((flags_[v] & kRefusedMask) >> kRefusedShift); }
   std::vector<uint32_t> face_source_;   // per face slot: its input face, or kRemoved once rewritten
   std::vector<uint32_t> corner_source_; // per face slot corner: the input corner it carries
   Constraints constraints_;
@@ -96,6 +114,8 @@ void Simplifier::prepare() {
   const size_t n = mesh_.vertex_count();
   rep_.dropped_degenerate_faces = drop_repeated_corner_faces(mesh_.triangles, face_source_);
   flags_.assign(n, 0);
+  for (uint32_t v = 0; v < n; ++v)
+    set_refused(v, RejectCount);
   if (opt_.locked)
     for (size_t v = 0; v < n; ++v)
       if ((*opt_.locked)[v]) flags_[v] |= kFlagLocked;
@@ -107,7 +127,8 @@ void Simplifier::prepare() {
     for (size_t i = 0; i < t.size(); i += 3)
       if (!is_finite(eval_.position(t[i])) || !is_finite(eval_.position(t[i + 1])) ||
           !is_finite(eval_.position(t[i + 2])))
-        flags_[t[i]] = flags_[t[i + 1]] = flags_[t[i + 2]] = kFlagLocked;
+        flags_[t[i]] |= kFlagLocked, flags_[t[i + 1]] |= kFlagLocked,
+            flags_[t[i + 2]] |= kFlagLocked;
 
   topo_.build(t, n);
   rep_.constrained_edges = constraints_.build(opt_, mesh_.positions.data(), t, topo_, n);
@@ -118,8 +139,10 @@ void Simplifier::prepare() {
         corner_source_[3 * f + c] = 3 * face_source_[f] + c;
   }
   normals_ = vertex_normals(mesh_.positions, t);
-  if (opt_.priority == Priority::LocalError)
-    reference_area_ = mean_triangle_area(mesh_.positions.data(), t);
+  reference_area_ = mean_triangle_area(mesh_.positions.data(), t);
+  planner_ =
+      Planner(eval_, topo_, t.data(), normals_.data(), limits_, Pricer{&estimate, &price, this},
+              opt_.fill == Fill::Best, opt_.mode != Mode::Surface3D);
   factor_.assign(n, std::numeric_limits<float>::infinity());
   faces_ = faces0_ = t.size() / 3;
   Ring ring;
@@ -183,25 +206,33 @@ double Simplifier::evaluate(uint32_t v, const Ring& ring) {
   Evaluation e = evaluate_plane(v, ring, &chord);
   if (opt_.priority == Priority::Factor || !std::isfinite(e.factor)) return e.factor;
   Patch patch;
+  double cost = 0;
   // The mesh look-ups wait for the pop, where the plan is made again in full.
-  Reject why = plan(v, ring, e, patch, /*check_topology=*/false);
+  Reject why = plan(v, ring, e, patch, cost, /*check_topology=*/false);
+  set_refused(v, why);
   if (why != RejectCount) {
     ++rep_.rejected[why]; // not queued; evaluated again when its ring changes
     return std::numeric_limits<double>::infinity();
   }
-  return std::max(patch_error(v, ring, patch, eval_, reference_area_), chord);
+  return std::max(cost, chord);
+}
+
+double Simplifier::price(const void* self, uint32_t v, const Ring& ring, const Patch& patch) {
+  const auto* s = static_cast<const Simplifier*>(self);
+  return patch_error(v, ring, patch, s->eval_, s->reference_area_);
+}
+
+double Simplifier::estimate(const void* self, uint32_t v, const Ring&, const Patch& patch) {
+  return drop_height(v, patch, static_cast<const Simplifier*>(self)->eval_);
 }
 
 Reject Simplifier::plan(uint32_t v, const Ring& ring, const Evaluation& e, Patch& patch,
-                        bool check_topology) {
-  const uint32_t* tris = mesh_.triangles.data();
+                        double& cost, bool check_topology) {
   std::array<int, 2> seam;
   const bool on_seam = along(v, ring, seam) == Along::Seam;
   auto attempt = [&](Vec3 d) {
-    return on_seam ? plan_seam_removal(v, ring, seam[0], seam[1], d, eval_, topo_, tris,
-                                       normals_.data(), limits_, patch, check_topology)
-                   : plan_removal(v, ring, d, eval_, topo_, tris, normals_.data(), limits_, patch,
-                                  check_topology);
+    return on_seam ? planner_.plan_seam(v, ring, seam[0], seam[1], d, patch, cost, check_topology)
+                   : planner_.plan(v, ring, d, patch, cost, check_topology);
   };
   Reject why = attempt(e.normal);
   // At tips, creases and thin parts the average plane of a strongly curved ring can fold it
@@ -277,6 +308,7 @@ void Simplifier::commit(uint32_t v, const Ring& ring, const Patch& patch, Queue&
   faces_ -= static_cast<size_t>(ring.faces - patch.count);
   --vertices_;
   ++rep_.removed;
+  rep_.relaxed_removals += !limits_.input_normals;
   rep_.max_removed_factor = std::max(rep_.max_removed_factor, double(factor_[v]));
 
   // The neighbours' planes and rings changed: re-evaluate them and append them to the back of
@@ -316,11 +348,13 @@ template <class Queue> void Simplifier::run(Queue& queue) {
   size_t pops_since_respread = 0, iterations = 0;
   Ring ring;
   Patch patch;
+  double cost = 0;
   for (;;) {
     if (target_met()) {
       rep_.stop = StopReason::TargetReached;
       break;
     }
+    if (queue.empty() && counts && relax(queue)) continue;
     if (queue.empty()) {
       rep_.stop = by_factor ? StopReason::MaxFactor
                   : counts  ? StopReason::NoCandidates
@@ -353,7 +387,8 @@ template <class Queue> void Simplifier::run(Queue& queue) {
     Evaluation e = evaluate_plane(v, ring);
     if (!std::isfinite(e.factor)) continue;
     // The plan is made again: a diagonal may have become an edge since v was queued.
-    Reject why = plan(v, ring, e, patch);
+    Reject why = plan(v, ring, e, patch, cost);
+    set_refused(v, why);
     if (why != RejectCount) {
       ++rep_.rejected[why]; // retried when a neighbour's removal changes its ring
       continue;
@@ -361,6 +396,68 @@ template <class Queue> void Simplifier::run(Queue& queue) {
     commit(v, ring, patch, queue);
   }
   if (opt_.progress && rep_.stop != StopReason::Cancelled) opt_.progress(1.0f);
+}
+
+template <class Queue> bool Simplifier::relax(Queue& queue) {
+  if (!limits_.input_normals) return false;
+  limits_.input_normals = false;
+  Ring ring;
+  const uint32_t* tris = mesh_.triangles.data();
+  for (uint32_t v = 0; v < mesh_.vertex_count(); ++v) {
+    if (flags_[v] & (kFlagLocked | kFlagRemoved) || topo_.valence(v) == 0) continue;
+    if (!removable(topo_.ring(v, tris, opt_.max_valence, ring))) continue;
+    double f = evaluate(v, ring);
+    factor_[v] = static_cast<float>(f);
+    if (std::isfinite(f)) queue.push(v, f);
+  }
+  return !queue.empty();
+}
+
+std::string Simplifier::explain_stop() const {
+  size_t boundary = 0, constrained = 0, locked = 0, nonmanifold = 0, high = 0, untried = 0;
+  size_t refused_by[RejectCount] = {};
+  Ring ring;
+  std::array<int, 2> seam;
+  for (uint32_t v = 0; v < mesh_.vertex_count(); ++v) {
+    if (flags_[v] & kFlagRemoved || topo_.valence(v) == 0) continue;
+    VertexKind kind = topo_.ring(v, mesh_.triangles.data(), opt_.max_valence, ring);
+    if (flags_[v] & kFlagLocked)
+      ++locked;
+    else if (kind == VertexKind::NonManifold)
+      ++nonmanifold;
+    else if (kind == VertexKind::HighValence)
+      ++high;
+    else if (!removable(kind))
+      ++boundary;
+    else if (along(v, ring, seam) == Along::Kept)
+      ++constrained;
+    else if (refused(v) != RejectCount)
+      ++refused_by[refused(v)];
+    else
+      ++untried;
+  }
+  std::string out;
+  auto add = [&](size_t count, const std::string& what) {
+    if (!count) return;
+    out += (out.empty() ? "" : "; ") + std::to_string(count) + " " + what;
+  };
+  add(boundary, opt_.simplify_boundary ? "on the boundary at corners or single triangles"
+                                       : "on the boundary, kept (boundary simplification is off)");
+  add(constrained, "on seams or creases where they end, meet or cross");
+  add(locked, "locked");
+  add(nonmanifold, "non-manifold");
+  add(high, "of too high valence");
+  std::string vetoes;
+  for (int r = 0; r < RejectCount; ++r)
+    if (refused_by[r])
+      vetoes += (vetoes.empty() ? "" : ", ") + std::string(reject_name(Reject(r))) + " " +
+                std::to_string(refused_by[r]);
+  size_t total_refused = 0;
+  for (size_t r : refused_by)
+    total_refused += r;
+  add(total_refused, "refused by the vetoes (" + vetoes + ")");
+  add(untried, "not evaluated (factor above the table's range)");
+  return "remaining vertices: " + (out.empty() ? std::string("none") : out);
 }
 
 void Simplifier::compact() {
@@ -435,6 +532,7 @@ Report simplify(Mesh& mesh, const Options& options) {
     BucketQueue q;
     s.run(q);
   }
+  if (rep.stop == StopReason::NoCandidates) rep.stop_detail = s.explain_stop();
   s.compact();
   rep.ok = true;
   rep.target_reached = rep.stop == StopReason::TargetReached || rep.stop == StopReason::MaxFactor ||

@@ -16,7 +16,7 @@ struct Patch {
   // For each new corner, the ring face (index into Ring::f) it takes its per-corner data from:
   // an old face at the same vertex, on the same side of any constrained edge.
   std::array<std::array<uint8_t, 3>, kMaxRing> from;
-  // The ring as it was planned (filled by plan_removal, read by patch_error): the direction
+  // The ring as it was planned (filled by the Planner, read by patch_error): the direction
   // it was projected along with its plane basis (u, w), the ring's 3D positions and their
   // projections relative to the removed vertex.
   Vec3 normal, u, w;

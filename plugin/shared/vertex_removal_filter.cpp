@@ -241,11 +241,14 @@ QString Application::simplify_layer(MeshModel& m, const FilterSettings& s, int l
   if (r.target_reached) {
     log(QString("Stopped: %1").arg(vrs::stop_reason_name(r.stop)));
   } else {
-    warn(QString("Target not reached (%1): every remaining vertex is kept (boundary, "
-                 "non-manifold, locked or of too high valence) or its removal would fold, flip "
-                 "or break the topology")
-             .arg(vrs::stop_reason_name(r.stop)));
+    warn(QString("Target not reached (%1): %2")
+             .arg(vrs::stop_reason_name(r.stop))
+             .arg(r.stop_detail.empty() ? QString("stopped before the target")
+                                        : QString::fromStdString(r.stop_detail)));
   }
+  if (r.relaxed_removals)
+    log(QString("%1 removals needed the input-normal veto lifted to reach the target")
+            .arg(r.relaxed_removals));
   if (!r.message.empty()) warn(QString("Input: %1").arg(QString::fromStdString(r.message)));
   return {};
 }

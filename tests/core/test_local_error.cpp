@@ -39,8 +39,13 @@ Planned plan_centre(const Mesh& m, uint32_t v, Vec3 normal) {
   std::vector<float> up(m.positions.size(), 0.0f);
   for (size_t i = 2; i < up.size(); i += 3)
     up[i] = 1.0f;
-  p.why = plan_removal(v, p.ring, normal, eval, t, m.triangles.data(), up.data(), RemovalLimits{},
-                       p.patch);
+  // The projection only: these tests pin the error of the paper's filling.
+  RemovalLimits limits;
+  double cost = 0;
+  auto zero = [](const void*, uint32_t, const Ring&, const Patch&) { return 0.0; };
+  Pricer none{zero, zero, nullptr};
+  Planner planner(eval, t, m.triangles.data(), up.data(), limits, none, /*fans=*/false);
+  p.why = planner.plan(v, p.ring, normal, p.patch, cost);
   return p;
 }
 

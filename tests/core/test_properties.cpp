@@ -5,6 +5,7 @@
 #include <cmath>
 #include <tuple>
 
+#include "fold_over.h"
 #include "mesh_checks.h"
 #include "test_meshes.h"
 
@@ -34,8 +35,11 @@ TEST_P(RealMesh, KeepsTheInvariants) {
   EXPECT_EQ(after.euler(), before.euler());
   EXPECT_LE(vrs_test::count_degenerate(m), vrs_test::count_degenerate(in));
   EXPECT_EQ(vrs_test::count_duplicate_directed_edges(m), 0u);
-  // Flipped against the original surface: the new face and its corners' input normals disagree.
-  EXPECT_EQ(vrs_test::count_flipped(in, m, r), 0u);
+  // Flipped against the original surface: the new face and its corners' input normals disagree
+  // (the promise while the input-normal veto holds: not after the last-resort pass).
+  if (r.relaxed_removals == 0) EXPECT_EQ(vrs_test::count_flipped(in, m, r), 0u);
+  // Turned over against every input face near it: never.
+  EXPECT_EQ(vrs_test::count_fold_overs(in, m, r), 0u);
 
   const size_t target = size_t(std::llround(ratio * double(in.face_count())));
   if (r.target_reached) {
@@ -45,8 +49,14 @@ TEST_P(RealMesh, KeepsTheInvariants) {
     EXPECT_EQ(r.stop, StopReason::NoCandidates);
     EXPECT_GT(m.face_count(), target);
   }
-  if (ratio >= 0.1) {
-    EXPECT_TRUE(r.target_reached) << m.face_count() << " faces for " << target;
+  // A closed mesh reaches every target (MeshLab's QECD with Preserve Topology reaches these);
+  // an open one with its boundary kept may not, and then the report says the boundary is why.
+  if (ratio >= 0.1 || before.boundary == 0) {
+    EXPECT_TRUE(r.target_reached) << m.face_count() << " faces for " << target << ": "
+                                  << r.stop_detail;
+  } else if (!r.target_reached) {
+    EXPECT_NE(r.stop_detail.find("boundary simplification is off"), std::string::npos)
+        << r.stop_detail;
   }
   RecordProperty("faces", int(m.face_count()));
 }
@@ -63,3 +73,21 @@ INSTANTIATE_TEST_SUITE_P(
       return n + "_" + std::to_string(int(std::get<1>(info.param) * 100)) + "pct_" +
              (std::get<2>(info.param) == Priority::Factor ? "factor" : "local_error");
     });
+
+// The fold-over check itself can fail: a new face turned over is caught, the same face the
+// right way round is not.
+TEST(FoldOverCheck, CatchesANewFaceTurnedOver) {
+  const Mesh in = vrs_test::icosphere(3);
+  Mesh m = in;
+  Options o;
+  o.target.ratio = 0.5;
+  const Report r = simplify(m, o);
+  ASSERT_TRUE(r.ok);
+  ASSERT_EQ(vrs_test::count_fold_overs(in, m, r), 0u);
+  size_t f = 0;
+  while (f < r.face_source.size() && r.face_source[f] != kRemoved)
+    ++f;
+  ASSERT_LT(f, m.face_count()) << "no new face";
+  std::swap(m.triangles[3 * f + 1], m.triangles[3 * f + 2]);
+  EXPECT_EQ(vrs_test::count_fold_overs(in, m, r), 1u);
+}

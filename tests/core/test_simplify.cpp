@@ -77,13 +77,20 @@ TEST(Simplify, TetrahedronCannotLoseAVertex) {
     EXPECT_EQ(m.triangles, in.triangles);
     EXPECT_EQ(r.stop, StopReason::NoCandidates);
     EXPECT_FALSE(r.target_reached);
-    EXPECT_EQ(r.rejected_total(), 4u); // each vertex refused once
+    // Each vertex refused once, then once more by the last-resort pass (input-normal veto
+    // lifted) the unmet target starts.
+    EXPECT_EQ(r.rejected_total(), 8u);
+    EXPECT_EQ(r.relaxed_removals, 0u);
     // Each hole's only triangle is the opposite face. The local-error planning pass leaves
-    // the mesh look-ups to the pop and sees first that the face would face inwards.
-    if (p == Priority::Factor)
-      EXPECT_EQ(r.rejected[RejectTriangle], 4u);
-    else
+    // the mesh look-ups to the pop and sees first that the face would face inwards; without
+    // the input-normal veto it is queued, and refused at the pop as the face that exists.
+    if (p == Priority::Factor) {
+      EXPECT_EQ(r.rejected[RejectTriangle], 8u);
+    } else {
       EXPECT_EQ(r.rejected[RejectFlip], 4u);
+      EXPECT_EQ(r.rejected[RejectTriangle], 4u);
+    }
+    EXPECT_EQ(r.stop_detail, "remaining vertices: 4 refused by the vetoes (triangle_exists 4)");
   }
 }
 

@@ -51,6 +51,7 @@ FuzzCase decode_fuzz_case(const uint8_t* data, size_t size) {
   o.priority = f1 & 1 ? vrs::Priority::Factor : vrs::Priority::LocalError;
   const bool raw_indices = f1 & 2, locks = f1 & 4, cancel = f1 & 8, unchecked = f1 & 16;
   const bool constrained = f1 & 32, creases = f1 & 64;
+  o.fill = f1 & 128 ? vrs::Fill::Projection : vrs::Fill::Best;
 
   const uint16_t intervals = in.u16();
   const uint8_t valence = in.u8();

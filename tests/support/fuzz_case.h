@@ -20,7 +20,8 @@ struct FuzzCase {
 };
 
 // Layout: 2 flag bytes (target kind, mode, queue, mapping, boundary, priority, raw indices,
-// locks, cancel, unchecked options), intervals (u16), max valence (u8), target parameter (u32),
+// locks, cancel, unchecked options, constrained edges, creases, projection fill),
+// intervals (u16), max valence (u8), target parameter (u32),
 // cancel count (u8), lock stride (u8), vertex count (u16), the positions as raw floats (any
 // bit pattern: NaN, inf, huge), then triangles as u16 triples until the bytes run out.
 // Indices are taken modulo vertex count + 1 (so one past the end still occurs) unless the raw

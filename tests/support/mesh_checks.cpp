@@ -1,5 +1,7 @@
 #include "mesh_checks.h"
 
+#include "fold_over.h"
+
 #include <algorithm>
 #include <cmath>
 #include <cstring>
@@ -327,8 +329,12 @@ std::string check_run(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Opti
     if (!e.empty()) return e;
   }
   if (count_degenerate(out) > count_degenerate(clean)) return "new degenerate faces";
-  if (size_t f = count_flipped_new(clean, out, r))
+  // The corners' normals are the promise while the input-normal veto holds; the last-resort
+  // pass lifts it (Report::relaxed_removals), the fold-over check below holds always.
+  if (size_t f = r.relaxed_removals ? 0 : count_flipped_new(clean, out, r))
     return std::to_string(f) + " new faces flipped against the input surface";
+  if (size_t f = count_fold_overs(clean, out, r))
+    return std::to_string(f) + " new faces fold over (against every input face near them)";
   if (euler_of(out, out_edges) != euler_of(clean, clean_edges))
     return "a component's Euler characteristic changed";
   e = check_corner_sources(in, out, o, r);

@@ -66,6 +66,13 @@ enum class IntervalMapping : uint8_t { Linear, Logarithmic };
 // fan): costlier, and closer to what a surface-error measure sees.
 enum class Priority : uint8_t { Factor, LocalError };
 
+// How the hole a removed vertex leaves may be filled. Projection is the paper's only way: the
+// ring projected on its average plane and triangulated there (fan or ear clipping by triangle
+// shape). Best also tries the fan from each ring vertex (a half-edge collapse of the vertex
+// onto that neighbour) and keeps, of the fillings no veto refuses, the one of least local
+// error (see Priority::LocalError): lower error, and it goes on where projections fold.
+enum class Fill : uint8_t { Projection, Best };
+
 // Progress: fraction of the planned work done, in [0, 1]. Return false to stop; the mesh is left
 // valid (every removal is atomic).
 using ProgressFn = std::function<bool(float fraction)>;
@@ -75,6 +82,7 @@ struct Options {
   Mode mode = Mode::Surface3D;
   QueueKind queue = QueueKind::Intervals;
   Priority priority = Priority::LocalError;
+  Fill fill = Fill::Best;
   IntervalMapping mapping = IntervalMapping::Linear;
   // Number of hash-table intervals, >= 2. The last one holds the vertices of highest factor;
   // TargetKind::Auto stops when only it is left, so more intervals simplify further.
@@ -115,6 +123,7 @@ enum Reject : uint8_t {
   RejectTriangle,   // a new triangle already exists (would duplicate a face)
   RejectFlip,       // a new triangle turns more than max_normal_angle_deg from the plane
   RejectDegenerate, // a new triangle would be a sliver or have no area
+  RejectFoldOver,   // a new triangle would face against a face it replaces (a fold-over)
   RejectCount
 };
 const char* reject_name(Reject r);
@@ -150,6 +159,15 @@ struct Report {
   size_t constrained_edges = 0;     // constrained edges of the input (given and by feature angle)
   size_t unreferenced_vertices = 0; // left untouched
 
+  // Removals made after the input-normal veto was lifted: when nothing else was left to
+  // remove and a count target was not met, a new triangle no longer has to face the input's
+  // side at its corners (it still may not fold over the faces it replaces).
+  size_t relaxed_removals = 0;
+  // When the target was not reached (stop == NoCandidates): what keeps the remaining
+  // vertices, e.g. "remaining vertices: 64 on the boundary, kept (boundary simplification is
+  // off); 2 refused by the vetoes (fold 1, edge_exists 1)".
+  std::string stop_detail;
+
   double max_removed_factor = 0.0; // largest priority (factor or local error) of a removed vertex
   std::vector<uint32_t> remap;     // old vertex index -> new index, or kRemoved
   // For each output face, the input face it is (same corners, same order), or kRemoved for a
@@ -175,5 +193,7 @@ bool parse_queue(const std::string& s, QueueKind& out);
 bool parse_mapping(const std::string& s, IntervalMapping& out);
 bool parse_priority(const std::string& s, Priority& out);
 const char* priority_name(Priority p);
+bool parse_fill(const std::string& s, Fill& out);
+const char* fill_name(Fill f);
 
 } // namespace vrs

@@ -1,0 +1,79 @@
+#include "vetoes.h"
+
+namespace vrs {
+
+namespace {
+
+// Is (a, b) an edge of the ring's polygon that already exists in the mesh? For an open ring the
+// closing edge (last, first) is new unless `closing_exists`.
+bool is_ring_edge(const Ring& ring, int a, int b, bool closing_exists) {
+  int k = ring.verts;
+  bool closed = ring.closed() || closing_exists;
+  if ((a + 1) % k == b && (closed || a + 1 < k)) return true;
+  if ((b + 1) % k == a && (closed || b + 1 < k)) return true;
+  return false;
+}
+
+} // namespace
+
+Reject veto_topology(const Ring& ring, const Patch& patch, OpenRing open, const Topology& topo,
+                     const uint32_t* tris) {
+  for (int t = 0; t < patch.count; ++t) {
+    const auto& tri = patch.tri[t];
+    if (topo.has_triangle(ring.v[tri[0]], ring.v[tri[1]], ring.v[tri[2]], tris))
+      return RejectTriangle;
+    for (int e = 0; e < 3; ++e) {
+      int a = tri[e], b = tri[(e + 1) % 3];
+      if (!is_ring_edge(ring, a, b, open == OpenRing::SeamSideOnEdge) &&
+          topo.has_edge(ring.v[a], ring.v[b], tris))
+        return RejectEdge;
+    }
+  }
+  return RejectCount;
+}
+
+Reject veto_shape(uint32_t v, const Ring& ring, const Patch& patch, const Evaluator& eval,
+                  const float* surface_normals, const RemovalLimits& limits, bool plane_angle) {
+  const int k = ring.verts;
+  const auto& q = patch.q;
+  const Vec3 c = eval.position(v);
+  // Unit normals of the faces being replaced: face i is (v, ring i, ring i + 1).
+  std::array<Vec3, kMaxRing> old_n;
+  for (int i = 0; i < ring.faces; ++i)
+    old_n[i] = normalized(cross(q[i] - c, q[(i + 1) % k] - c));
+  auto folds_on = [&](Vec3 face, int i) { return !(dot(face, old_n[i]) > limits.min_fold_cos); };
+
+  for (int t = 0; t < patch.count; ++t) {
+    const auto& tri = patch.tri[t];
+    Vec3 a = q[tri[0]], b = q[tri[1]], d = q[tri[2]];
+    if (triangle_quality(a, b, d) < limits.min_quality) return RejectDegenerate;
+    Vec3 face = normalized(cross(b - a, d - a));
+    if (plane_angle && dot(face, patch.normal) < limits.min_normal_cos) return RejectFlip;
+    Vec3 original;
+    for (int e = 0; e < 3; ++e) {
+      const float* sn = surface_normals + 3 * size_t(ring.v[tri[e]]);
+      original = original + Vec3{sn[0], sn[1], sn[2]};
+    }
+    if (limits.input_normals && !(dot(face, original) > 0)) return RejectFlip;
+    // The faces it replaces: the old face on each of its ring edges; a triangle made of
+    // diagonals only answers to the old faces at its corners.
+    bool on_ring_edge = false;
+    for (int e = 0; e < 3; ++e) {
+      int i = tri[e], j = tri[(e + 1) % 3];
+      if (j == (i + 1) % k && i < ring.faces) {
+        on_ring_edge = true;
+        if (folds_on(face, i)) return RejectFoldOver;
+      }
+    }
+    if (!on_ring_edge)
+      for (int e = 0; e < 3; ++e) {
+        int i = tri[e];
+        if (i < ring.faces && folds_on(face, i)) return RejectFoldOver;
+        int before = i > 0 ? i - 1 : ring.closed() ? k - 1 : -1;
+        if (before >= 0 && folds_on(face, before)) return RejectFoldOver;
+      }
+  }
+  return RejectCount;
+}
+
+} // namespace vrs

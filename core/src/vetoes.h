@@ -1,0 +1,39 @@
+// What forbids a planned patch. Each veto names its reason (Reject); the planner tries the
+// next candidate when one is refused.
+#pragma once
+
+#include "evaluation.h"
+#include "removal_types.h"
+#include "topology.h"
+#include "triangulation.h"
+#include "vrs/simplify.h"
+
+namespace vrs {
+
+struct RemovalLimits {
+  double min_normal_cos = 0.17; // cos(max_normal_angle_deg)
+  // Quality (1 = equilateral) under which a new triangle counts as degenerate. Low on purpose:
+  // thin triangles are legitimate on CAD meshes; only near-zero-area ones are refused.
+  double min_quality = 1e-3;
+  // A new triangle whose normal makes more than 90° with a face it replaces folds the
+  // surface over onto itself.
+  double min_fold_cos = 0.0;
+  // A new triangle must also face the input surface's side at its corners. After many
+  // removals its corners can be far apart on a curved part, so the driver lifts this when
+  // nothing else is left to remove and the target is not met (the fold-over veto stays).
+  bool input_normals = true;
+};
+
+// Manifold topology: no new triangle that already exists, no new edge that already exists
+// (it would get a third face).
+Reject veto_topology(const Ring& ring, const Patch& patch, OpenRing open, const Topology& topo,
+                     const uint32_t* tris);
+
+// Shape: no sliver, no triangle facing against the input surface at its corners
+// (`surface_normals`, 3 floats a vertex; when limits.input_normals), none turned over against the
+// face(s) it replaces, and, when `plane_angle` (fillings made on the projection plane), none
+// steeper than limits.min_normal_cos to that plane.
+Reject veto_shape(uint32_t v, const Ring& ring, const Patch& patch, const Evaluator& eval,
+                  const float* surface_normals, const RemovalLimits& limits, bool plane_angle);
+
+} // namespace vrs

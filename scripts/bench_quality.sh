@@ -1,0 +1,71 @@
+#!/usr/bin/env bash
+# Error, targets and fold-overs over whole data sets, not the six meshes the benchmark tunes on:
+# every mesh of CGAL's data set and every OBJ/PLY/STL/OFF model of assimp's test models (Debian
+# packages) of at least 200 faces, at 50 %, 10 % and 1 %. Methods: the current default
+# ("ours"), the paper's factor with the same candidates ("ours-factor"), the paper's filling
+# only ("ours-projection"), the boundary simplified ("ours-boundary", for the open meshes'
+# targets), MeshLab's QECD with its defaults and with Preserve Topology, and the core of
+# BASELINE (default: 453defe, the last commit before candidate fillings; built once into
+# $VRS_CACHE). Writes bench/quality.csv and bench/QUALITY.md.
+#   scripts/bench_quality.sh [--samples S] [--baseline COMMIT] [--only NAME...]
+set -euo pipefail
+top=$(cd "$(dirname "$0")/.." && pwd)
+cache=${VRS_CACHE:-/var/cache/vrsimplify}
+samples=30000 baseline=453defe only=()
+while [ $# -gt 0 ]; do
+  case $1 in
+  --samples) samples=$2; shift 2 ;;
+  --baseline) baseline=$2; shift 2 ;;
+  --only) shift; only=("$@"); break ;;
+  *) echo "unknown option $1" >&2; exit 2 ;;
+  esac
+done
+"$top/scripts/setup.sh"
+"$top/scripts/build.sh" -DVRS_BUILD_TESTS=OFF >/dev/null
+bench=${VRS_BENCH:-$top/build/bin/vrs_bench} # VRS_BENCH: a prebuilt one (comparing builds)
+
+# The baseline's benchmark, from its own sources (a detached worktree beside the cache).
+base_dir=$cache/baseline-$baseline
+if [ ! -x "$base_dir/build/bin/vrs_bench" ]; then
+  rm -rf "$base_dir"
+  git -C "$top" worktree prune
+  git -C "$top" worktree add --detach "$base_dir" "$baseline" >/dev/null
+  ln -s "$top/third_party" "$base_dir/third_party"
+  cmake -S "$base_dir" -B "$base_dir/build" -DCMAKE_BUILD_TYPE=Release -DVRS_BUILD_BENCH=ON \
+    -DVRS_BUILD_TESTS=OFF >/dev/null
+  cmake --build "$base_dir/build" --target vrs_bench -j "$(nproc)" >/dev/null
+fi
+base=$base_dir/build/bin/vrs_bench
+
+files=()
+while IFS= read -r f; do files+=("$f"); done < <(
+  find "$top/third_party/cgal-data/data/meshes" -maxdepth 1 -type f | sort
+  find /usr/share/assimp/models -type f \( -iname '*.obj' -o -iname '*.ply' -o -iname '*.stl' \
+    -o -iname '*.off' \) -not -path '*/invalid/*' | sort)
+csv=$top/bench/quality.csv
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+echo "set,mesh,input_faces,open,ratio,target_faces,method,output_faces,output_vertices,seconds,error_max,error_mean,fold_area,note" >"$csv"
+for f in "${files[@]}"; do
+  name=$(basename "$f"); name=${name%.*}
+  case $f in /usr/share/assimp/*) set_name=assimp ;; *) set_name=cgal ;; esac
+  if [ ${#only[@]} -gt 0 ] && ! printf '%s\n' "${only[@]}" | grep -qx "$name"; then continue; fi
+  info=$("$bench" --info "$f" 2>/dev/null) || continue # unreadable, or not a triangle mesh
+  read -r faces open <<<"$info"
+  [ "$faces" -ge 200 ] || continue
+  echo "== $set_name $name ($faces faces)" >&2
+  rm -f "$work"/*.ply
+  {
+    "$bench" "$f" --name "$name" --samples "$samples" \
+      --methods ours,ours-factor,ours-projection,ours-boundary,qecd,qecd-topology 2>/dev/null || true
+    # The baseline's rows get their fold-over share from today's measure (same samples).
+    "$base" "$f" --name "$name" --samples "$samples" --methods ours --save "$work" 2>/dev/null |
+      while IFS=, read -r m fa r t _ of ov s pk ex emax emean erms note; do
+        folds=$("$bench" --compare "$f" "$work/${name}_${r}_ours.ply" --samples "$samples" | cut -d' ' -f4)
+        echo "$m,$fa,$r,$t,baseline,$of,$ov,$s,$pk,$ex,$emax,$emean,$erms,$folds,$note"
+      done || true
+  } | awk -F, -v s="$set_name" -v o="$open" 'NF >= 14 {
+        printf "%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s\n", s, $1, $2, o, $3, $4, $5, $6, $7, $8, $11, $12, $14, $15 }' >>"$csv"
+done
+python3 "$top/bench/quality_report.py" "$csv" "$top/bench/QUALITY.md" "$baseline"
+echo "wrote $csv and bench/QUALITY.md" >&2

@@ -1,0 +1,109 @@
+// What forbids a patch: topology, slivers, the input's side, fold-overs.
+#include <gtest/gtest.h>
+
+#include "candidates.h"
+#include "removal.h"
+#include "test_meshes.h"
+#include "vetoes.h"
+
+using namespace vrs;
+
+namespace {
+
+struct Case {
+  Mesh mesh;
+  Topology topo;
+  Ring ring;
+  std::vector<float> normals;
+};
+
+void build(Case& s, uint32_t v) {
+  s.topo.build(s.mesh.triangles, s.mesh.vertex_count());
+  s.topo.ring(v, s.mesh.triangles.data(), 64, s.ring);
+  s.normals = vertex_normals(s.mesh.positions, s.mesh.triangles);
+}
+
+Patch projected(const Case& s, uint32_t v, Vec3 n) {
+  Patch p;
+  plane_basis(n, p.u, p.w);
+  p.normal = n;
+  const float* x = s.mesh.positions.data();
+  for (int i = 0; i < s.ring.verts; ++i) {
+    const uint32_t u = s.ring.v[i];
+    p.q[i] = {x[3 * u], x[3 * u + 1], x[3 * u + 2]};
+    Vec3 d = p.q[i] - Vec3{x[3 * v], x[3 * v + 1], x[3 * v + 2]};
+    p.p[i] = {dot(d, p.u), dot(d, p.w)};
+  }
+  return p;
+}
+
+} // namespace
+
+// The arrow-shaped ring: seen from ring vertices 2 and 4 the notch at 3 is behind an edge, so
+// their fans hold a triangle turned over; from the notch itself every triangle is fine.
+TEST(Vetoes, FoldOverRefusesAFanTurnedOverTheFaceItReplaces) {
+  Case s;
+  s.mesh = vrs_test::concave_fan();
+  build(s, 6);
+  Evaluator eval(Mode::Surface3D, {0, 0, 1}, s.mesh.positions.data());
+  RemovalLimits limits;
+  limits.input_normals = false; // the last-resort pass: only the fold-over veto is left
+  Patch p = projected(s, 6, {0, 0, 1});
+  for (int apex : {2, 4}) {
+    ASSERT_TRUE(fill_candidate(s.ring, OpenRing::Border, 1 + apex, p));
+    EXPECT_EQ(veto_shape(6, s.ring, p, eval, s.normals.data(), limits, false), RejectFoldOver)
+        << "apex " << apex;
+  }
+  ASSERT_TRUE(fill_candidate(s.ring, OpenRing::Border, 1 + 3, p));
+  EXPECT_EQ(veto_shape(6, s.ring, p, eval, s.normals.data(), limits, false), RejectCount);
+  // With the input-normal veto on, the same fan is refused by it first.
+  limits.input_normals = true;
+  ASSERT_TRUE(fill_candidate(s.ring, OpenRing::Border, 1 + 2, p));
+  EXPECT_EQ(veto_shape(6, s.ring, p, eval, s.normals.data(), limits, false), RejectFlip);
+}
+
+TEST(Vetoes, TopologyRefusesATriangleThatAlreadyExists) {
+  Case s;
+  s.mesh = vrs_test::tetrahedron();
+  build(s, 0);
+  Patch p = projected(s, 0, {1, 1, 1});
+  ASSERT_TRUE(fill_candidate(s.ring, OpenRing::Border, 1, p));
+  EXPECT_EQ(veto_topology(s.ring, p, OpenRing::Border, s.topo, s.mesh.triangles.data()),
+            RejectTriangle);
+}
+
+TEST(Vetoes, SliverIsDegenerate) {
+  Case s;
+  s.mesh = vrs_test::hexagon_fan();
+  // Ring vertices 0, 1 and 2 on one line: the fan from 0 makes the flat triangle (0, 1, 2).
+  s.mesh.positions[3 * 1 + 0] = 0.5f * (s.mesh.positions[0] + s.mesh.positions[6]);
+  s.mesh.positions[3 * 1 + 1] = 0.5f * (s.mesh.positions[1] + s.mesh.positions[7]);
+  build(s, 6);
+  Evaluator eval(Mode::Surface3D, {0, 0, 1}, s.mesh.positions.data());
+  Patch p = projected(s, 6, {0, 0, 1});
+  ASSERT_TRUE(fill_candidate(s.ring, OpenRing::Border, 1, p));
+  EXPECT_EQ(veto_shape(6, s.ring, p, eval, s.normals.data(), RemovalLimits{}, false),
+            RejectDegenerate);
+}
+
+// The planner keeps a candidate no veto refuses, and the one its estimate ranks first.
+TEST(Vetoes, PlannerTakesTheBestRankedValidCandidate) {
+  Case s;
+  s.mesh = vrs_test::concave_fan();
+  s.mesh.positions[3 * 6 + 2] = 0.3f; // v above the ring: every filling drops it
+  build(s, 6);
+  Evaluator eval(Mode::Surface3D, {0, 0, 1}, s.mesh.positions.data());
+  RemovalLimits limits;
+  // Rank the fan from the notch (candidate 4) first, the projection last.
+  Pricer price{[](const void*, uint32_t, const Ring&, const Patch& p) {
+                 return p.tri[0][0] == 3 && p.count == 4 && p.tri[1][0] == 3 ? 0.0 : 1.0;
+               },
+               [](const void*, uint32_t, const Ring&, const Patch&) { return 7.0; }, nullptr};
+  Planner planner(eval, s.topo, s.mesh.triangles.data(), s.normals.data(), limits, price, true);
+  Patch out;
+  double cost = 0;
+  ASSERT_EQ(planner.plan(6, s.ring, {0, 0, 1}, out, cost), RejectCount);
+  EXPECT_EQ(cost, 7.0);
+  for (int t = 0; t < out.count; ++t)
+    EXPECT_EQ(out.tri[t][0], 3) << "triangle " << t;
+}
