@@ -44,6 +44,10 @@ void fill_fan(const Ring& ring, int apex, Patch& out) {
 } // namespace
 
 bool fill_candidate(const Ring& ring, OpenRing open, int c, Patch& out) {
+  if (ring.verts == 2) { // one triangle cut off: its edge between the two neighbours stays
+    out.count = 0;
+    return !ring.closed();
+  }
   if (c == 0) {
     if (!fill_projection(ring, open, out)) return false;
   } else {

@@ -13,9 +13,10 @@ namespace vrs {
 // there. Candidates 1..k are the fans from ring vertex apex = candidate - 1: exactly a
 // half-edge collapse of the vertex onto that neighbour, which needs no projection (it still
 // works where the ring folds on every plane: tips, creases, thin parts).
-// A three-vertex ring has one triangle whatever the apex: one fan stands for all.
+// A three-vertex ring has one triangle whatever the apex: one fan stands for all. A vertex of
+// a single triangle (an open two-vertex ring) has one filling: none, the triangle goes.
 inline int candidate_count(const Ring& ring, bool fans) {
-  return fans ? 1 + (ring.verts == 3 ? 1 : ring.verts) : 1;
+  return fans && ring.verts > 2 ? 1 + (ring.verts == 3 ? 1 : ring.verts) : 1;
 }
 
 // Writes candidate `c` into `out` (tri and from; the projection `out.p`, `out.q` and

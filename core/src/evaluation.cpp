@@ -111,7 +111,7 @@ Evaluation Evaluator::evaluate(uint32_t v, const Ring& ring, bool boundary_line)
     // Corners of the outline stay: removing one cuts a piece off the mesh's shape, which a
     // factor (a distance) cannot price. A turn above 30° is a corner, as a polyline would say.
     Vec3 in = normalized(c - p[k - 1]), out = normalized(p[0] - c);
-    if (!(dot(in, out) >= kBoundaryCornerCos)) {
+    if (!(dot(in, out) >= corner_cos_)) {
       e.factor = std::numeric_limits<double>::infinity();
       return e;
     }

@@ -31,6 +31,10 @@ class Evaluator {
 
   Vec3 position(uint32_t v) const { return {pos_[3 * v], pos_[3 * v + 1], pos_[3 * v + 2]}; }
 
+  // Outline corners: a boundary vertex whose outline turns more than acos(cos) is kept
+  // (default kBoundaryCornerCos). The driver's last-resort pass sets -1: none is.
+  void set_boundary_corner_cos(double cos) { corner_cos_ = cos; }
+
   // Factor of v with its ordered ring. `boundary_line` adds, for an open ring, the distance to
   // the line through its two boundary neighbours (the paper's two-neighbour factor).
   Evaluation evaluate(uint32_t v, const Ring& ring, bool boundary_line) const;
@@ -42,6 +46,7 @@ class Evaluator {
   Vec3 plane_;
   const float* pos_;
   int all_triples_;
+  double corner_cos_ = kBoundaryCornerCos;
 };
 
 // Distance from p to the line through a and b (to a when a == b).

@@ -32,6 +32,17 @@ double point_triangle_distance(Vec3 p, Vec3 a, Vec3 b, Vec3 c) {
   return length(p - (a + ab * v + ac * w));
 }
 
+namespace {
+
+double distance_to_segment(Vec3 p, Vec3 a, Vec3 b) {
+  Vec3 ab = b - a;
+  double len2 = dot(ab, ab), t = len2 > 0 ? dot(p - a, ab) / len2 : 0.0;
+  t = std::min(1.0, std::max(0.0, t));
+  return length(p - (a + ab * t));
+}
+
+} // namespace
+
 double patch_error(uint32_t v, const Ring& ring, const Patch& patch, const Evaluator& eval,
                    double reference_area) {
   const int k = ring.verts;
@@ -106,6 +117,8 @@ double patch_error(uint32_t v, const Ring& ring, const Patch& patch, const Evalu
     if (n > 0 && std::fabs(dot(c - a, normalized(cross(b - a, d - a)))) >= to_new) continue;
     to_new = std::min(to_new, point_triangle_distance(c, a, b, d));
   }
+  // A triangle cut off (no patch): the surface now ends at the edge between the two neighbours.
+  if (patch.count == 0 && k == 2) to_new = distance_to_segment(c, q[0], q[1]);
   return std::max(worst, to_new) * std::sqrt(area / reference_area);
 }
 

@@ -53,7 +53,7 @@ bool star_direction(uint32_t v, const Ring& ring, const Evaluator& eval, Vec3& o
 Reject Planner::plan(uint32_t v, const Ring& ring, Vec3 n, Patch& out, double& cost,
                      bool check_topology, OpenRing open) const {
   const int k = ring.verts;
-  if (k < 3) return RejectFold;
+  if (k < 3 && !(k == 2 && !ring.closed())) return RejectFold;
   project(v, ring, n, *eval_, out);
   const int candidates = candidate_count(ring, fans_);
   // Every candidate gets the cheap estimate; in its order, the first one no veto refuses is

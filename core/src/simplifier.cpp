@@ -62,8 +62,12 @@ class Simplifier {
   std::string explain_stop() const;
 
  private:
+  // A vertex of a single triangle goes with it only in the last-resort pass: that cuts a
+  // triangle off the outline.
   bool removable(VertexKind k) const {
-    return k == VertexKind::Interior || (opt_.simplify_boundary && k == VertexKind::Boundary);
+    return k == VertexKind::Interior ||
+           (opt_.simplify_boundary &&
+            (k == VertexKind::Boundary || (k == VertexKind::Corner && !limits_.input_normals)));
   }
   // What the constrained edges allow for a removable vertex: no constraint, a seam through it
   // (its ring positions in `seam`), or nothing (kept).
@@ -85,7 +89,8 @@ class Simplifier {
   float progress_fraction(size_t queued, size_t queued0) const;
   template <class Queue> void commit(uint32_t v, const Ring& ring, const Patch& patch, Queue& q);
   // The last resort when a count target is not met and nothing is left to remove: lifts the
-  // input-normal veto and queues every removable vertex again. False if it was done already.
+  // input-normal veto and the outline-corner rule (with boundary simplification on) and
+  // queues every removable vertex again. False if it was done already.
   template <class Queue> bool relax(Queue& queue);
 
   Mesh& mesh_;
@@ -400,7 +405,17 @@ template <class Queue> void Simplifier::run(Queue& queue) {
 
 template <class Queue> bool Simplifier::relax(Queue& queue) {
   if (!limits_.input_normals) return false;
+  // Nothing to gain when the kept border alone needs more than the target: on the input's
+  // surface (Euler, manifold), any triangulation keeping its B border vertices has at least
+  // 2B - 2V + F faces. Lifting vetoes there would only crumple the interior.
+  if (!opt_.simplify_boundary && rep_.kept_boundary) {
+    const long b = long(rep_.kept_boundary), v = long(vertices_ + rep_.removed), f = long(faces0_);
+    if ((target_faces_ && 2 * b - 2 * v + f > long(target_faces_)) ||
+        (target_vertices_ && b > long(target_vertices_)))
+      return false;
+  }
   limits_.input_normals = false;
+  eval_.set_boundary_corner_cos(-1.0);
   Ring ring;
   const uint32_t* tris = mesh_.triangles.data();
   for (uint32_t v = 0; v < mesh_.vertex_count(); ++v) {
@@ -415,6 +430,7 @@ template <class Queue> bool Simplifier::relax(Queue& queue) {
 
 std::string Simplifier::explain_stop() const {
   size_t boundary = 0, constrained = 0, locked = 0, nonmanifold = 0, high = 0, untried = 0;
+  size_t corners = 0;
   size_t refused_by[RejectCount] = {};
   Ring ring;
   std::array<int, 2> seam;
@@ -433,6 +449,8 @@ std::string Simplifier::explain_stop() const {
       ++constrained;
     else if (refused(v) != RejectCount)
       ++refused_by[refused(v)];
+    else if (kind == VertexKind::Boundary)
+      ++corners;
     else
       ++untried;
   }
@@ -441,11 +459,12 @@ std::string Simplifier::explain_stop() const {
     if (!count) return;
     out += (out.empty() ? "" : "; ") + std::to_string(count) + " " + what;
   };
-  add(boundary, opt_.simplify_boundary ? "on the boundary at corners or single triangles"
+  add(boundary, opt_.simplify_boundary ? "on the boundary in a single triangle"
                                        : "on the boundary, kept (boundary simplification is off)");
+  add(corners, "at corners of the outline");
   add(constrained, "on seams or creases where they end, meet or cross");
   add(locked, "locked");
-  add(nonmanifold, "non-manifold");
+  add(nonmanifold, "non-manifold or inconsistently oriented");
   add(high, "of too high valence");
   std::string vetoes;
   for (int r = 0; r < RejectCount; ++r)
@@ -456,7 +475,7 @@ std::string Simplifier::explain_stop() const {
   for (size_t r : refused_by)
     total_refused += r;
   add(total_refused, "refused by the vetoes (" + vetoes + ")");
-  add(untried, "not evaluated (factor above the table's range)");
+  add(untried, "without a usable plane (degenerate or non-finite neighbourhood)");
   return "remaining vertices: " + (out.empty() ? std::string("none") : out);
 }
 

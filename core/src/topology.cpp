@@ -115,6 +115,17 @@ bool Topology::has_edge(uint32_t a, uint32_t b, const uint32_t* tris) const {
   return false;
 }
 
+int Topology::edge_faces(uint32_t a, uint32_t b, const uint32_t* tris) const {
+  if (count_[b] < count_[a]) std::swap(a, b);
+  const uint32_t* s = faces_of(a);
+  int n = 0;
+  for (uint32_t i = 0; i < count_[a]; ++i) {
+    const uint32_t* t = tris + 3 * s[i];
+    n += t[0] == b || t[1] == b || t[2] == b;
+  }
+  return n;
+}
+
 bool Topology::has_triangle(uint32_t a, uint32_t b, uint32_t c, const uint32_t* tris) const {
   const uint32_t* s = faces_of(a);
   for (uint32_t i = 0; i < count_[a]; ++i) {

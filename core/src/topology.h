@@ -49,6 +49,7 @@ class Topology {
   VertexKind ring(uint32_t v, const uint32_t* tris, int max_valence, Ring& out) const;
 
   bool has_edge(uint32_t a, uint32_t b, const uint32_t* tris) const;
+  int edge_faces(uint32_t a, uint32_t b, const uint32_t* tris) const; // faces holding edge (a, b)
   bool has_triangle(uint32_t a, uint32_t b, uint32_t c, const uint32_t* tris) const;
 
  private:

@@ -18,6 +18,9 @@ bool is_ring_edge(const Ring& ring, int a, int b, bool closing_exists) {
 
 Reject veto_topology(const Ring& ring, const Patch& patch, OpenRing open, const Topology& topo,
                      const uint32_t* tris) {
+  // A triangle cut off the outline must leave its third edge to another face: alone, the
+  // triangle is a whole component, and it would vanish.
+  if (ring.verts == 2 && topo.edge_faces(ring.v[0], ring.v[1], tris) < 2) return RejectEdge;
   for (int t = 0; t < patch.count; ++t) {
     const auto& tri = patch.tri[t];
     if (topo.has_triangle(ring.v[tri[0]], ring.v[tri[1]], ring.v[tri[2]], tris))
@@ -50,11 +53,13 @@ Reject veto_shape(uint32_t v, const Ring& ring, const Patch& patch, const Evalua
     Vec3 face = normalized(cross(b - a, d - a));
     if (plane_angle && dot(face, patch.normal) < limits.min_normal_cos) return RejectFlip;
     Vec3 original;
+    bool some_corner_agrees = false;
     for (int e = 0; e < 3; ++e) {
       const float* sn = surface_normals + 3 * size_t(ring.v[tri[e]]);
       original = original + Vec3{sn[0], sn[1], sn[2]};
+      some_corner_agrees = some_corner_agrees || dot(face, Vec3{sn[0], sn[1], sn[2]}) > 0;
     }
-    if (limits.input_normals && !(dot(face, original) > 0)) return RejectFlip;
+    if (limits.input_normals ? !(dot(face, original) > 0) : !some_corner_agrees) return RejectFlip;
     // The faces it replaces: the old face on each of its ring edges; a triangle made of
     // diagonals only answers to the old faces at its corners.
     bool on_ring_edge = false;

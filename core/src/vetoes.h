@@ -25,7 +25,7 @@ struct RemovalLimits {
 };
 
 // Manifold topology: no new triangle that already exists, no new edge that already exists
-// (it would get a third face).
+// (it would get a third face); a triangle cut off leaves its outer edge to another face.
 Reject veto_topology(const Ring& ring, const Patch& patch, OpenRing open, const Topology& topo,
                      const uint32_t* tris);
 

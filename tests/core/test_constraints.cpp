@@ -69,12 +69,15 @@ size_t check_wedges(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Report
   return out.face_count();
 }
 
+// faces == 0: every vertex whose removal is allowed goes (a priority bound, not a count, so
+// the last-resort pass that cuts outline corners to meet a count does not run).
 vrs::Options with(const std::vector<uint32_t>* edges, size_t faces) {
   vrs::Options o;
   o.constrained_edges = edges;
   o.corner_sources = true;
-  o.target.kind = vrs::TargetKind::Faces;
+  o.target.kind = faces ? vrs::TargetKind::Faces : vrs::TargetKind::MaxFactor;
   o.target.faces = faces;
+  o.target.max_factor = 1e30;
   return o;
 }
 
@@ -203,8 +206,8 @@ TEST(Constraints, FeatureAngleKeepsACreaseStraight) {
   vrs::Options o;
   o.feature_angle_deg = 45;
   o.simplify_boundary = true;
-  o.target.kind = vrs::TargetKind::Faces;
-  o.target.faces = 0;
+  o.target.kind = vrs::TargetKind::MaxFactor; // as far as allowed, without the last resort
+  o.target.max_factor = 1e30;
   vrs::Report r = vrs::simplify(out, o);
   ASSERT_TRUE(r.ok) << r.message;
   EXPECT_EQ(r.constrained_edges, 8u);

@@ -47,7 +47,12 @@ TEST(Vetoes, FoldOverRefusesAFanTurnedOverTheFaceItReplaces) {
   build(s, 6);
   Evaluator eval(Mode::Surface3D, {0, 0, 1}, s.mesh.positions.data());
   RemovalLimits limits;
-  limits.input_normals = false; // the last-resort pass: only the fold-over veto is left
+  // The last-resort pass: one corner agreeing with the face is enough for the input-normal
+  // veto; make every corner's input normal ambiguous (both sides) so that only the fold-over
+  // veto is left to see the turned-over triangle.
+  limits.input_normals = false;
+  for (size_t i = 0; i < s.normals.size(); i += 3)
+    s.normals[i + 2] = (i / 3) % 2 ? 1.0f : -1.0f;
   Patch p = projected(s, 6, {0, 0, 1});
   for (int apex : {2, 4}) {
     ASSERT_TRUE(fill_candidate(s.ring, OpenRing::Border, 1 + apex, p));
@@ -56,7 +61,9 @@ TEST(Vetoes, FoldOverRefusesAFanTurnedOverTheFaceItReplaces) {
   }
   ASSERT_TRUE(fill_candidate(s.ring, OpenRing::Border, 1 + 3, p));
   EXPECT_EQ(veto_shape(6, s.ring, p, eval, s.normals.data(), limits, false), RejectCount);
-  // With the input-normal veto on, the same fan is refused by it first.
+  // With the input normals all up and their veto on, the same fan is refused by it first.
+  for (size_t i = 0; i < s.normals.size(); i += 3)
+    s.normals[i + 2] = 1.0f;
   limits.input_normals = true;
   ASSERT_TRUE(fill_candidate(s.ring, OpenRing::Border, 1 + 2, p));
   EXPECT_EQ(veto_shape(6, s.ring, p, eval, s.normals.data(), limits, false), RejectFlip);

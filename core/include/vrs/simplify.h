@@ -89,8 +89,9 @@ struct Options {
   int intervals = 1000;
   // Boundary vertices are kept by default (paper §2.2). When true, a boundary vertex may be
   // removed (factor: the larger of its distance to the line through its two boundary neighbours
-  // and its average-plane factor); corners, where the outline turns by more than 30°, and
-  // vertices of a single triangle are always kept.
+  // and its average-plane factor); vertices of a single triangle are always kept, and corners,
+  // where the outline turns by more than 30°, are kept unless a count target cannot be met
+  // otherwise (see Report::relaxed_removals).
   bool simplify_boundary = false;
   // A new triangle may turn at most this far from the average plane's normal. The projection
   // check alone allows up to 90°; nearly vertical triangles are folds in waiting.
@@ -159,9 +160,9 @@ struct Report {
   size_t constrained_edges = 0;     // constrained edges of the input (given and by feature angle)
   size_t unreferenced_vertices = 0; // left untouched
 
-  // Removals made after the input-normal veto was lifted: when nothing else was left to
-  // remove and a count target was not met, a new triangle no longer has to face the input's
-  // side at its corners (it still may not fold over the faces it replaces).
+  // Removals made by the last-resort pass: when nothing else was left to remove and a count
+  // target was not met, a new triangle no longer has to face the input's side at its corners
+  // (it still may not fold over the faces it replaces), and outline corners may go.
   size_t relaxed_removals = 0;
   // When the target was not reached (stop == NoCandidates): what keeps the remaining
   // vertices, e.g. "remaining vertices: 64 on the boundary, kept (boundary simplification is
