@@ -63,7 +63,8 @@ n_out=$(wc -l <"$out/out.vtx")
 
 # 5. The JSON report has every field the benchmark and the README read.
 for field in input_vertices input_faces output_vertices output_faces seconds_simplify seconds_total \
-  rejected_total stop_reason target_reached fold edge_exists flip degenerate triangle_exists; do
+  rejected_total stop_reason target_reached fold edge_exists flip degenerate triangle_exists \
+  fold_over relaxed_removals stop_detail; do
   grep -q "\"$field\"" "$out/f10.ply.json" && ok || fail "json lacks $field"
 done
 
@@ -71,7 +72,8 @@ done
 for args in "--faces 3000" "--vertices 2000" "--max-factor 0.0001" "--auto" "--auto --intervals 50" \
   "--ratio 0.2 --queue heap" "--ratio 0.2 --mapping log" "--ratio 0.2 --mode terrain" \
   "--ratio 0.2 --mode planar" "--ratio 0.2 --simplify-boundary" "--ratio 0.2 --priority factor" \
-  "--ratio 0.2 --priority local-error" "--max-factor 0.0001 --priority factor"; do
+  "--ratio 0.2 --priority local-error" "--max-factor 0.0001 --priority factor" \
+  "--ratio 0.2 --fill projection" "--ratio 0.2 --fill best"; do
   # shellcheck disable=SC2086
   if "$bin" "$in" "$out/t.ply" $args --json >"$out/t.json" 2>"$out/err"; then
     f=$(json_num "$out/t.json" output_faces)
@@ -99,6 +101,7 @@ expect_exit 2 "--ratio needs" "$bin" "$in" "$out/never.ply" --ratio abc
 expect_exit 1 "ratio must be in" "$bin" "$in" "$out/never.ply" --ratio 2
 expect_exit 2 "--mode must be" "$bin" "$in" "$out/never.ply" --mode cubist
 expect_exit 2 "--priority must be" "$bin" "$in" "$out/never.ply" --priority best
+expect_exit 2 "--fill must be" "$bin" "$in" "$out/never.ply" --fill ears
 expect_exit 1 "intervals" "$bin" "$in" "$out/never.ply" --intervals 1
 expect_exit 2 "required" "$bin" "$in"
 expect_exit 3 "cannot write" "$bin" "$in" "$out/no/such/dir/x.ply"

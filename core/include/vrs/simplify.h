@@ -93,8 +93,9 @@ struct Options {
   // where the outline turns by more than 30°, are kept unless a count target cannot be met
   // otherwise (see Report::relaxed_removals).
   bool simplify_boundary = false;
-  // A new triangle may turn at most this far from the average plane's normal. The projection
-  // check alone allows up to 90°; nearly vertical triangles are folds in waiting.
+  // A triangle of the projection filling may turn at most this far from the average plane's
+  // normal: the projection check alone allows up to 90°, and nearly vertical triangles are
+  // folds in waiting. Fans are held instead to the faces they replace (no fold-over).
   double max_normal_angle_deg = 80.0;
   // Vertices with more neighbours than this are kept: the removal's ear clipping is O(k^3)
   // and a hub that large is a feature (a cone apex, a fan centre), not noise.
@@ -122,7 +123,8 @@ enum Reject : uint8_t {
   RejectFold,       // ring does not project as a star around the vertex (the patch folds)
   RejectEdge,       // a new diagonal is already an edge of the mesh (would make it non-manifold)
   RejectTriangle,   // a new triangle already exists (would duplicate a face)
-  RejectFlip,       // a new triangle turns more than max_normal_angle_deg from the plane
+  RejectFlip,       // a new triangle turns more than max_normal_angle_deg from the plane, or
+                    // faces away from the input surface at its corners
   RejectDegenerate, // a new triangle would be a sliver or have no area
   RejectFoldOver,   // a new triangle would face against a face it replaces (a fold-over)
   RejectCount
