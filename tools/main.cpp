@@ -7,7 +7,10 @@
 #include <cstring>
 #include <string>
 
+#include <unistd.h>
+
 #include "mesh_io.h"
+#include "progress_bar.h"
 #include "vrs/simplify.h"
 
 namespace {
@@ -33,6 +36,8 @@ const char* kUsage =
     "  --simplify-boundary             also remove boundary vertices (default: kept)\n"
     "  --feature-angle DEG             keep edges whose faces turn more than DEG apart as\n"
     "                                  polylines, as texture seams always are (default 0: off)\n"
+    "  --progress / --quiet            progress bar on stderr after the first second: by\n"
+    "                                  default only when stderr is a terminal\n"
     "  --json                          print one JSON line instead of the text report\n"
     "  --ascii                         write ascii PLY (default binary)\n";
 
@@ -106,6 +111,8 @@ int main(int argc, char** argv) {
   std::string in, out;
   vrs::Options opt;
   bool json = false, ascii = false;
+  // The progress bar: on a terminal by default; --progress forces it (logs), --quiet drops it.
+  int progress = -1;
   int targets = 0;
   for (int i = 1; i < argc; ++i) {
     std::string a = argv[i];
@@ -121,6 +128,10 @@ int main(int argc, char** argv) {
       json = true;
     } else if (a == "--ascii") {
       ascii = true;
+    } else if (a == "--progress") {
+      progress = 1;
+    } else if (a == "--quiet") {
+      progress = 0;
     } else if (a == "--simplify-boundary") {
       opt.simplify_boundary = true;
     } else if (a == "--auto") {
@@ -193,8 +204,12 @@ int main(int argc, char** argv) {
   const std::vector<uint32_t> seams = vrs_tool::seams(*loaded.doc, mesh);
   opt.constrained_edges = &seams;
   opt.corner_sources = vrs_tool::has_corner_data(*loaded.doc);
+  const bool terminal = isatty(STDERR_FILENO);
+  vrs_tool::ProgressBar bar(progress == 1 || (progress == -1 && terminal), terminal);
+  opt.progress = [&bar](float f) { return bar.update(f); };
   const auto t1 = clock::now();
   vrs::Report report = vrs::simplify(mesh, opt);
+  bar.finish();
   const double seconds_simplify = std::chrono::duration<double>(clock::now() - t1).count();
   if (!report.ok) {
     std::fprintf(stderr, "vrsimplify: %s\n", report.message.c_str());

@@ -73,7 +73,8 @@ for args in "--faces 3000" "--vertices 2000" "--max-factor 0.0001" "--auto" "--a
   "--ratio 0.2 --queue heap" "--ratio 0.2 --mapping log" "--ratio 0.2 --mode terrain" \
   "--ratio 0.2 --mode planar" "--ratio 0.2 --simplify-boundary" "--ratio 0.2 --priority factor" \
   "--ratio 0.2 --priority local-error" "--max-factor 0.0001 --priority factor" \
-  "--ratio 0.2 --fill projection" "--ratio 0.2 --fill best"; do
+  "--ratio 0.2 --fill projection" "--ratio 0.2 --fill best" "--ratio 0.2 --progress" \
+  "--ratio 0.2 --quiet"; do
   # shellcheck disable=SC2086
   if "$bin" "$in" "$out/t.ply" $args --json >"$out/t.json" 2>"$out/err"; then
     f=$(json_num "$out/t.json" output_faces)
