@@ -107,7 +107,9 @@ def main():
         "(`ours-boundary`; the default keeps the boundary and says so).",
         "- **fold area**: mean share of the output area whose face turns more than 90° from the "
         "input face nearest to it (QECD's in the last column).",
-        "- **time ÷ baseline**: total simplification time over the baseline core's, same runs.",
+        "- **time ÷ baseline**: total simplification time over the baseline core's, same runs (these "
+        "meshes take milliseconds and the runs share the machine: a rough figure; the README's "
+        "1.2 M-face runs measure time).",
         "",
     ]
     for subset_name, pick in [

@@ -21,7 +21,7 @@ while [ $# -gt 0 ]; do
   esac
 done
 "$top/scripts/setup.sh"
-"$top/scripts/build.sh" -DVRS_BUILD_TESTS=OFF >/dev/null
+"$top/scripts/build.sh" >/dev/null
 bench=${VRS_BENCH:-$top/build/bin/vrs_bench} # VRS_BENCH: a prebuilt one (comparing builds)
 
 # The baseline's benchmark, from its own sources (a detached worktree beside the cache).
