@@ -52,14 +52,12 @@ Reject veto_shape(uint32_t v, const Ring& ring, const Patch& patch, const Evalua
     if (triangle_quality(a, b, d) < limits.min_quality) return RejectDegenerate;
     Vec3 face = normalized(cross(b - a, d - a));
     if (plane_angle && dot(face, patch.normal) < limits.min_normal_cos) return RejectFlip;
-    Vec3 original;
-    bool some_corner_agrees = false;
+    int agreeing = 0;
     for (int e = 0; e < 3; ++e) {
       const float* sn = surface_normals + 3 * size_t(ring.v[tri[e]]);
-      original = original + Vec3{sn[0], sn[1], sn[2]};
-      some_corner_agrees = some_corner_agrees || dot(face, Vec3{sn[0], sn[1], sn[2]}) > 0;
+      agreeing += dot(face, Vec3{sn[0], sn[1], sn[2]}) > 0;
     }
-    if (limits.input_normals ? !(dot(face, original) > 0) : !some_corner_agrees) return RejectFlip;
+    if (agreeing < (limits.input_normals ? 3 : 1)) return RejectFlip;
     // The faces it replaces: the old face on each of its ring edges; a triangle made of
     // diagonals only answers to the old faces at its corners.
     bool on_ring_edge = false;

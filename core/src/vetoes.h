@@ -18,9 +18,10 @@ struct RemovalLimits {
   // A new triangle whose normal makes more than 90° with a face it replaces folds the
   // surface over onto itself.
   double min_fold_cos = 0.0;
-  // A new triangle must also face the input surface's side at its corners. After many
-  // removals its corners can be far apart on a curved part, so the driver lifts this when
-  // nothing else is left to remove and the target is not met (the fold-over veto stays).
+  // A new triangle must also face the input surface's side at each of its corners (the input's
+  // vertex normals). After many removals its corners can be far apart on a curved part, so
+  // the driver's last resort, when nothing else is left to remove and the target is not met,
+  // asks it of one corner only (the fold-over veto stays).
   bool input_normals = true;
 };
 
@@ -30,7 +31,7 @@ Reject veto_topology(const Ring& ring, const Patch& patch, OpenRing open, const 
                      const uint32_t* tris);
 
 // Shape: no sliver, no triangle facing against the input surface at its corners
-// (`surface_normals`, 3 floats a vertex; when limits.input_normals), none turned over against the
+// (`surface_normals`, 3 floats a vertex; see limits.input_normals), none turned over against the
 // face(s) it replaces, and, when `plane_angle` (fillings made on the projection plane), none
 // steeper than limits.min_normal_cos to that plane.
 Reject veto_shape(uint32_t v, const Ring& ring, const Patch& patch, const Evaluator& eval,
