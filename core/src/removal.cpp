@@ -50,16 +50,8 @@ bool star_direction(uint32_t v, const Ring& ring, const Evaluator& eval, Vec3& o
   return false;
 }
 
-Reject Planner::plan_candidate(uint32_t v, const Ring& ring, int c, Patch& out) const {
-  if (c < 1 || c >= candidate_count(ring, fans_)) return RejectFold;
-  project(v, ring, Vec3{0, 0, 1}, *eval_, out); // the fan's vetoes read only the 3D positions
-  fill_candidate(ring, OpenRing::Border, c, out);
-  Reject why = veto_topology(ring, out, OpenRing::Border, *topo_, tris_);
-  return why != RejectCount ? why : veto_shape(v, ring, out, *eval_, normals_, *limits_, false);
-}
-
 Reject Planner::plan(uint32_t v, const Ring& ring, Vec3 n, Patch& out, double& cost,
-                     bool check_topology, OpenRing open, int* chosen) const {
+                     bool check_topology, OpenRing open) const {
   const int k = ring.verts;
   if (k < 3 && !(k == 2 && !ring.closed())) return RejectFold;
   project(v, ring, n, *eval_, out);
@@ -104,7 +96,6 @@ Reject Planner::plan(uint32_t v, const Ring& ring, Vec3 n, Patch& out, double& c
       why = veto_shape(v, ring, out, *eval_, normals_, *limits_, c == 0 || on_plane_);
     if (why == RejectCount) {
       cost = price_.exact(v, ring, out);
-      if (chosen) *chosen = c;
       return RejectCount;
     }
     if (first_why == RejectCount) first_why = why;

@@ -46,16 +46,8 @@ class Planner {
   // price in `cost`), else why the best ranked was refused (RejectFold: none could be made).
   // `check_topology` = false skips the mesh look-ups (new triangle / edge already there): a pass
   // for the priority only, redone in full when the vertex is popped.
-  // `chosen`, if given, gets the candidate planned (see candidates.h).
   Reject plan(uint32_t v, const Ring& ring, Vec3 normal, Patch& out, double& cost,
-              bool check_topology = true, OpenRing open = OpenRing::Border,
-              int* chosen = nullptr) const;
-
-  // Candidate `c` alone, every veto checked (no price): a fan chosen when the vertex was last
-  // evaluated, tried first when it is popped with the same ring. Any other candidate ranked
-  // before it was refused by a shape veto then, and would be again, so when this one passes
-  // it is what plan() would choose. Fans only (c >= 1), in Surface3D (no plane to hold to).
-  Reject plan_candidate(uint32_t v, const Ring& ring, int c, Patch& out) const;
+              bool check_topology = true, OpenRing open = OpenRing::Border) const;
 
   // The removal of a vertex on exactly two constrained edges, to ring positions i < j: the ring
   // is cut along the polyline (ring[i], v, ring[j]) and each side is planned as an open ring

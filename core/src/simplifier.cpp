@@ -82,7 +82,7 @@ class Simplifier {
   // Plans v's removal on its evaluated plane, then on a fallback direction; RejectCount = ok,
   // with the chosen patch's local error in `cost`.
   Reject plan(uint32_t v, const Ring& ring, const Evaluation& e, Patch& patch, double& cost,
-              bool check_topology = true, int* chosen = nullptr);
+              bool check_topology = true);
   static double price(const void* self, uint32_t v, const Ring& ring, const Patch& patch);
   static double estimate(const void* self, uint32_t v, const Ring& ring, const Patch& patch);
   bool target_met() const;
@@ -103,10 +103,6 @@ class Simplifier {
   std::vector<float> factor_;
   std::vector<float> normals_; // unit vertex normals of the input surface, 3 a vertex
   std::vector<uint8_t> flags_;
-  // Per vertex: the fan its last evaluation planned (candidate index), kNoFan if none; the
-  // pop tries it first (Planner::plan_candidate).
-  static constexpr uint8_t kNoFan = 0xff;
-  std::vector<uint8_t> fan_;
   void set_refused(uint32_t v, Reject why) {
     flags_[v] = uint8_t((flags_[v] & ~kRefusedMask) | (why << kRefusedShift));
   }
@@ -123,7 +119,6 @@ void Simplifier::prepare() {
   const size_t n = mesh_.vertex_count();
   rep_.dropped_degenerate_faces = drop_repeated_corner_faces(mesh_.triangles, face_source_);
   flags_.assign(n, 0);
-  fan_.assign(n, kNoFan);
   for (uint32_t v = 0; v < n; ++v)
     set_refused(v, RejectCount);
   if (opt_.locked)
@@ -214,18 +209,12 @@ Evaluation Simplifier::evaluate_plane(uint32_t v, const Ring& ring, double* chor
 double Simplifier::evaluate(uint32_t v, const Ring& ring) {
   double chord = 0;
   Evaluation e = evaluate_plane(v, ring, &chord);
-  fan_[v] = kNoFan;
   if (opt_.priority == Priority::Factor || !std::isfinite(e.factor)) return e.factor;
   Patch patch;
   double cost = 0;
-  int chosen = 0;
   // The mesh look-ups wait for the pop, where the plan is made again in full.
-  Reject why = plan(v, ring, e, patch, cost, /*check_topology=*/false, &chosen);
+  Reject why = plan(v, ring, e, patch, cost, /*check_topology=*/false);
   set_refused(v, why);
-  std::array<int, 2> seam;
-  if (why == RejectCount && chosen >= 1 && opt_.mode == Mode::Surface3D &&
-      along(v, ring, seam) == Along::Free)
-    fan_[v] = uint8_t(chosen);
   if (why != RejectCount) {
     ++rep_.rejected[why]; // not queued; evaluated again when its ring changes
     return std::numeric_limits<double>::infinity();
@@ -243,13 +232,12 @@ double Simplifier::estimate(const void* self, uint32_t v, const Ring&, const Pat
 }
 
 Reject Simplifier::plan(uint32_t v, const Ring& ring, const Evaluation& e, Patch& patch,
-                        double& cost, bool check_topology, int* chosen) {
+                        double& cost, bool check_topology) {
   std::array<int, 2> seam;
   const bool on_seam = along(v, ring, seam) == Along::Seam;
   auto attempt = [&](Vec3 d) {
-    return on_seam
-               ? planner_.plan_seam(v, ring, seam[0], seam[1], d, patch, cost, check_topology)
-               : planner_.plan(v, ring, d, patch, cost, check_topology, OpenRing::Border, chosen);
+    return on_seam ? planner_.plan_seam(v, ring, seam[0], seam[1], d, patch, cost, check_topology)
+                   : planner_.plan(v, ring, d, patch, cost, check_topology);
   };
   Reject why = attempt(e.normal);
   // At tips, creases and thin parts the average plane of a strongly curved ring can fold it
@@ -401,13 +389,6 @@ template <class Queue> void Simplifier::run(Queue& queue) {
     ++pops_since_respread;
     VertexKind kind = topo_.ring(v, mesh_.triangles.data(), opt_.max_valence, ring);
     if (!removable(kind)) continue;
-    // Its ring is as it was evaluated (any change re-evaluates it): the fan planned then is
-    // what a full plan would choose, if the mesh look-ups skipped then let it through.
-    if (fan_[v] != kNoFan && planner_.plan_candidate(v, ring, fan_[v], patch) == RejectCount) {
-      set_refused(v, RejectCount);
-      commit(v, ring, patch, queue);
-      continue;
-    }
     Evaluation e = evaluate_plane(v, ring);
     if (!std::isfinite(e.factor)) continue;
     // The plan is made again: a diagonal may have become an edge since v was queued.

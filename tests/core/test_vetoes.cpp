@@ -114,33 +114,3 @@ TEST(Vetoes, PlannerTakesTheBestRankedValidCandidate) {
   for (int t = 0; t < out.count; ++t)
     EXPECT_EQ(out.tri[t][0], 3) << "triangle " << t;
 }
-
-// The pop's shortcut: the fan a plan chose, planned alone, passes the same vetoes and makes the
-// same triangles; a candidate out of range is refused.
-TEST(Vetoes, PlanCandidateRemakesTheChosenFan) {
-  Case s;
-  s.mesh = vrs_test::hexagon_fan(0.2f);
-  build(s, 6);
-  Evaluator eval(Mode::Surface3D, {0, 0, 1}, s.mesh.positions.data());
-  RemovalLimits limits;
-  // Rank the fan from ring vertex 2 first.
-  Pricer price{[](const void*, uint32_t, const Ring&, const Patch& p) {
-                 return p.count == 4 && p.tri[0][0] == 2 && p.tri[1][0] == 2 ? 0.0 : 1.0;
-               },
-               [](const void*, uint32_t, const Ring&, const Patch&) { return 1.0; }, nullptr};
-  Planner planner(eval, s.topo, s.mesh.triangles.data(), s.normals.data(), limits, price, true);
-  Patch planned, again;
-  double cost = 0;
-  int chosen = -1;
-  ASSERT_EQ(planner.plan(6, s.ring, {0, 0, 1}, planned, cost, true, OpenRing::Border, &chosen),
-            RejectCount);
-  ASSERT_EQ(chosen, 1 + 2);
-  ASSERT_EQ(planner.plan_candidate(6, s.ring, chosen, again), RejectCount);
-  ASSERT_EQ(again.count, planned.count);
-  for (int t = 0; t < planned.count; ++t) {
-    EXPECT_EQ(again.tri[t], planned.tri[t]);
-    EXPECT_EQ(again.from[t], planned.from[t]);
-  }
-  EXPECT_EQ(planner.plan_candidate(6, s.ring, 0, again), RejectFold); // not a fan
-  EXPECT_EQ(planner.plan_candidate(6, s.ring, 8, again), RejectFold); // no such candidate
-}
