@@ -80,6 +80,8 @@ Reject Planner::plan(uint32_t v, const Ring& ring, Vec3 n, Patch& out, double& c
   }
   std::stable_sort(order.begin(), order.begin() + m,
                    [&](uint8_t x, uint8_t y) { return estimate[x] < estimate[y]; });
+  FaceNormals replaced;
+  replaced_face_normals(v, ring, out, *eval_, replaced);
   Reject first_why = RejectCount;
   for (int r = 0; r < m; ++r) {
     const int c = order[r];
@@ -93,7 +95,7 @@ Reject Planner::plan(uint32_t v, const Ring& ring, Vec3 n, Patch& out, double& c
     // Topology first (it cannot change with the projection), then shape.
     Reject why = check_topology ? veto_topology(ring, out, open, *topo_, tris_) : RejectCount;
     if (why == RejectCount)
-      why = veto_shape(v, ring, out, *eval_, normals_, *limits_, c == 0 || on_plane_);
+      why = veto_shape(ring, out, replaced, normals_, *limits_, c == 0 || on_plane_);
     if (why == RejectCount) {
       cost = price_.exact(v, ring, out);
       return RejectCount;

@@ -35,15 +35,17 @@ Reject veto_topology(const Ring& ring, const Patch& patch, OpenRing open, const 
   return RejectCount;
 }
 
-Reject veto_shape(uint32_t v, const Ring& ring, const Patch& patch, const Evaluator& eval,
+void replaced_face_normals(uint32_t v, const Ring& ring, const Patch& patch, const Evaluator& eval,
+                           FaceNormals& out) {
+  const Vec3 c = eval.position(v);
+  for (int i = 0; i < ring.faces; ++i)
+    out[i] = normalized(cross(patch.q[i] - c, patch.q[(i + 1) % ring.verts] - c));
+}
+
+Reject veto_shape(const Ring& ring, const Patch& patch, const FaceNormals& old_n,
                   const float* surface_normals, const RemovalLimits& limits, bool plane_angle) {
   const int k = ring.verts;
   const auto& q = patch.q;
-  const Vec3 c = eval.position(v);
-  // Unit normals of the faces being replaced: face i is (v, ring i, ring i + 1).
-  std::array<Vec3, kMaxRing> old_n;
-  for (int i = 0; i < ring.faces; ++i)
-    old_n[i] = normalized(cross(q[i] - c, q[(i + 1) % k] - c));
   auto folds_on = [&](Vec3 face, int i) { return !(dot(face, old_n[i]) > limits.min_fold_cos); };
 
   for (int t = 0; t < patch.count; ++t) {

@@ -34,7 +34,12 @@ Reject veto_topology(const Ring& ring, const Patch& patch, OpenRing open, const 
 // (`surface_normals`, 3 floats a vertex; see limits.input_normals), none turned over against the
 // face(s) it replaces, and, when `plane_angle` (fillings made on the projection plane), none
 // steeper than limits.min_normal_cos to that plane.
-Reject veto_shape(uint32_t v, const Ring& ring, const Patch& patch, const Evaluator& eval,
+// `replaced`: the unit normals of the ring's faces (replaced_face_normals), the same for every
+// candidate of one plan, so made once.
+using FaceNormals = std::array<Vec3, kMaxRing>;
+void replaced_face_normals(uint32_t v, const Ring& ring, const Patch& patch, const Evaluator& eval,
+                           FaceNormals& out);
+Reject veto_shape(const Ring& ring, const Patch& patch, const FaceNormals& replaced,
                   const float* surface_normals, const RemovalLimits& limits, bool plane_angle);
 
 } // namespace vrs

@@ -37,6 +37,12 @@ Patch projected(const Case& s, uint32_t v, Vec3 n) {
   return p;
 }
 
+FaceNormals replaced(const Case& s, const Patch& p, const Evaluator& eval) {
+  FaceNormals n;
+  replaced_face_normals(6, s.ring, p, eval, n);
+  return n;
+}
+
 } // namespace
 
 // The arrow-shaped ring: seen from ring vertices 2 and 4 the notch at 3 is behind an edge, so
@@ -56,17 +62,20 @@ TEST(Vetoes, FoldOverRefusesAFanTurnedOverTheFaceItReplaces) {
   Patch p = projected(s, 6, {0, 0, 1});
   for (int apex : {2, 4}) {
     ASSERT_TRUE(fill_candidate(s.ring, OpenRing::Border, 1 + apex, p));
-    EXPECT_EQ(veto_shape(6, s.ring, p, eval, s.normals.data(), limits, false), RejectFoldOver)
+    EXPECT_EQ(veto_shape(s.ring, p, replaced(s, p, eval), s.normals.data(), limits, false),
+              RejectFoldOver)
         << "apex " << apex;
   }
   ASSERT_TRUE(fill_candidate(s.ring, OpenRing::Border, 1 + 3, p));
-  EXPECT_EQ(veto_shape(6, s.ring, p, eval, s.normals.data(), limits, false), RejectCount);
+  EXPECT_EQ(veto_shape(s.ring, p, replaced(s, p, eval), s.normals.data(), limits, false),
+            RejectCount);
   // With the input normals all up and their veto on, the same fan is refused by it first.
   for (size_t i = 0; i < s.normals.size(); i += 3)
     s.normals[i + 2] = 1.0f;
   limits.input_normals = true;
   ASSERT_TRUE(fill_candidate(s.ring, OpenRing::Border, 1 + 2, p));
-  EXPECT_EQ(veto_shape(6, s.ring, p, eval, s.normals.data(), limits, false), RejectFlip);
+  EXPECT_EQ(veto_shape(s.ring, p, replaced(s, p, eval), s.normals.data(), limits, false),
+            RejectFlip);
 }
 
 TEST(Vetoes, TopologyRefusesATriangleThatAlreadyExists) {
@@ -89,7 +98,7 @@ TEST(Vetoes, SliverIsDegenerate) {
   Evaluator eval(Mode::Surface3D, {0, 0, 1}, s.mesh.positions.data());
   Patch p = projected(s, 6, {0, 0, 1});
   ASSERT_TRUE(fill_candidate(s.ring, OpenRing::Border, 1, p));
-  EXPECT_EQ(veto_shape(6, s.ring, p, eval, s.normals.data(), RemovalLimits{}, false),
+  EXPECT_EQ(veto_shape(s.ring, p, replaced(s, p, eval), s.normals.data(), RemovalLimits{}, false),
             RejectDegenerate);
 }
 
