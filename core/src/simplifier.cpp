@@ -67,7 +67,7 @@ class Simplifier {
   bool removable(VertexKind k) const {
     return k == VertexKind::Interior ||
            (opt_.simplify_boundary &&
-            (k == VertexKind::Boundary || (k == VertexKind::Corner && !limits_.input_normals)));
+            (k == VertexKind::Boundary || (k == VertexKind::Corner && last_resort_)));
   }
   // What the constrained edges allow for a removable vertex: no constraint, a seam through it
   // (its ring positions in `seam`), or nothing (kept).
@@ -98,6 +98,7 @@ class Simplifier {
   Report& rep_;
   Evaluator eval_;
   RemovalLimits limits_;
+  bool last_resort_ = false; // see relax()
   Topology topo_;
   Planner planner_{eval_, topo_, mesh_.triangles.data(), nullptr, limits_, {}, false};
   std::vector<float> factor_;
@@ -313,7 +314,7 @@ void Simplifier::commit(uint32_t v, const Ring& ring, const Patch& patch, Queue&
   faces_ -= static_cast<size_t>(ring.faces - patch.count);
   --vertices_;
   ++rep_.removed;
-  rep_.relaxed_removals += !limits_.input_normals;
+  rep_.relaxed_removals += last_resort_;
   rep_.max_removed_factor = std::max(rep_.max_removed_factor, double(factor_[v]));
 
   // The neighbours' planes and rings changed: re-evaluate them and append them to the back of
@@ -404,7 +405,7 @@ template <class Queue> void Simplifier::run(Queue& queue) {
 }
 
 template <class Queue> bool Simplifier::relax(Queue& queue) {
-  if (!limits_.input_normals) return false;
+  if (last_resort_) return false;
   // Nothing to gain when the kept border alone needs more than the target: on the input's
   // surface (Euler, manifold), any triangulation keeping its B border vertices has at least
   // 2B - 2V + F faces. Lifting vetoes there would only crumple the interior.
@@ -414,6 +415,9 @@ template <class Queue> bool Simplifier::relax(Queue& queue) {
         (target_vertices_ && b > long(target_vertices_)))
       return false;
   }
+  // What the last resort lifts, in one place: the vetoes' and the evaluation's settings, and
+  // (through removable()) the single triangles.
+  last_resort_ = true;
   limits_.input_normals = false;
   eval_.set_boundary_corner_cos(-1.0);
   Ring ring;
