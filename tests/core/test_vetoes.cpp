@@ -3,6 +3,7 @@
 
 #include "candidates.h"
 #include "removal.h"
+#include "ring_case.h"
 #include "test_meshes.h"
 #include "vetoes.h"
 
@@ -10,34 +11,7 @@ using namespace vrs;
 
 namespace {
 
-struct Case {
-  Mesh mesh;
-  Topology topo;
-  Ring ring;
-  std::vector<float> normals;
-};
-
-void build(Case& s, uint32_t v) {
-  s.topo.build(s.mesh.triangles, s.mesh.vertex_count());
-  s.topo.ring(v, s.mesh.triangles.data(), 64, s.ring);
-  s.normals = vertex_normals(s.mesh.positions, s.mesh.triangles);
-}
-
-Patch projected(const Case& s, uint32_t v, Vec3 n) {
-  Patch p;
-  plane_basis(n, p.u, p.w);
-  p.normal = n;
-  const float* x = s.mesh.positions.data();
-  for (int i = 0; i < s.ring.verts; ++i) {
-    const uint32_t u = s.ring.v[i];
-    p.q[i] = {x[3 * u], x[3 * u + 1], x[3 * u + 2]};
-    Vec3 d = p.q[i] - Vec3{x[3 * v], x[3 * v + 1], x[3 * v + 2]};
-    p.p[i] = {dot(d, p.u), dot(d, p.w)};
-  }
-  return p;
-}
-
-FaceNormals replaced(const Case& s, const Patch& p, const Evaluator& eval) {
+FaceNormals replaced(const RingCase& s, const Patch& p, const Evaluator& eval) {
   FaceNormals n;
   replaced_face_normals(6, s.ring, p, eval, n);
   return n;
@@ -48,9 +22,9 @@ FaceNormals replaced(const Case& s, const Patch& p, const Evaluator& eval) {
 // The arrow-shaped ring: seen from ring vertices 2 and 4 the notch at 3 is behind an edge, so
 // their fans hold a triangle turned over; from the notch itself every triangle is fine.
 TEST(Vetoes, FoldOverRefusesAFanTurnedOverTheFaceItReplaces) {
-  Case s;
+  RingCase s;
   s.mesh = vrs_test::concave_fan();
-  build(s, 6);
+  open_ring(s, 6);
   Evaluator eval(Mode::Surface3D, {0, 0, 1}, s.mesh.positions.data());
   RemovalLimits limits;
   // The last-resort pass: one corner agreeing with the face is enough for the input-normal
@@ -79,9 +53,9 @@ TEST(Vetoes, FoldOverRefusesAFanTurnedOverTheFaceItReplaces) {
 }
 
 TEST(Vetoes, TopologyRefusesATriangleThatAlreadyExists) {
-  Case s;
+  RingCase s;
   s.mesh = vrs_test::tetrahedron();
-  build(s, 0);
+  open_ring(s, 0);
   Patch p = projected(s, 0, {1, 1, 1});
   ASSERT_TRUE(fill_candidate(s.ring, OpenRing::Border, 1, p));
   EXPECT_EQ(veto_topology(s.ring, p, OpenRing::Border, s.topo, s.mesh.triangles.data()),
@@ -89,12 +63,12 @@ TEST(Vetoes, TopologyRefusesATriangleThatAlreadyExists) {
 }
 
 TEST(Vetoes, SliverIsDegenerate) {
-  Case s;
+  RingCase s;
   s.mesh = vrs_test::hexagon_fan();
   // Ring vertices 0, 1 and 2 on one line: the fan from 0 makes the flat triangle (0, 1, 2).
   s.mesh.positions[3 * 1 + 0] = 0.5f * (s.mesh.positions[0] + s.mesh.positions[6]);
   s.mesh.positions[3 * 1 + 1] = 0.5f * (s.mesh.positions[1] + s.mesh.positions[7]);
-  build(s, 6);
+  open_ring(s, 6);
   Evaluator eval(Mode::Surface3D, {0, 0, 1}, s.mesh.positions.data());
   Patch p = projected(s, 6, {0, 0, 1});
   ASSERT_TRUE(fill_candidate(s.ring, OpenRing::Border, 1, p));
@@ -104,10 +78,10 @@ TEST(Vetoes, SliverIsDegenerate) {
 
 // The planner keeps a candidate no veto refuses, and the one its estimate ranks first.
 TEST(Vetoes, PlannerTakesTheBestRankedValidCandidate) {
-  Case s;
+  RingCase s;
   s.mesh = vrs_test::concave_fan();
   s.mesh.positions[3 * 6 + 2] = 0.3f; // v above the ring: every filling drops it
-  build(s, 6);
+  open_ring(s, 6);
   Evaluator eval(Mode::Surface3D, {0, 0, 1}, s.mesh.positions.data());
   RemovalLimits limits;
   // Rank the fan from the notch (candidate 4) first, the projection last.
