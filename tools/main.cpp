@@ -36,8 +36,9 @@ const char* kUsage =
     "  --simplify-boundary             also remove boundary vertices (default: kept)\n"
     "  --feature-angle DEG             keep edges whose faces turn more than DEG apart as\n"
     "                                  polylines, as texture seams always are (default 0: off)\n"
-    "  --progress / --quiet            progress bar on stderr after the first second: by\n"
-    "                                  default only when stderr is a terminal\n"
+    "  --progress / --quiet            progress on stderr: by default only when stderr is a\n"
+    "                                  terminal (a bar, after the first second); --progress\n"
+    "                                  elsewhere prints a line per 10 %\n"
     "  --json                          print one JSON line instead of the text report\n"
     "  --ascii                         write ascii PLY (default binary)\n";
 

@@ -12,7 +12,7 @@ bool ProgressBar::update(float fraction) {
   if (!enabled_) return true;
   const auto now = Clock::now();
   const double elapsed = std::chrono::duration<double>(now - start_).count();
-  if (elapsed < 1.0) return true;
+  if (elapsed < 1.0 && terminal_) return true;
   const float f = std::min(1.0f, std::max(0.0f, fraction));
   if (terminal_) {
     if (drawn_ && now - last_ < std::chrono::milliseconds(250) && f < 1.0f) return true;

@@ -1,6 +1,6 @@
 // The CLI's progress bar on stderr: long runs (a 19 M-face mesh takes minutes) say how far they
-// are. Silent for the first second, so short runs print nothing; redrawn in place on a
-// terminal, one line per 10 % otherwise (logs).
+// are. On a terminal: redrawn in place, silent for the first second so that short runs print
+// nothing. Otherwise (logs, asked for with --progress): one line per 10 % from the start.
 #pragma once
 
 #include <chrono>

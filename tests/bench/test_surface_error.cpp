@@ -56,3 +56,18 @@ TEST(SurfaceError, IsSymmetricWhereOneSideMissesAPart) {
   // half, all are 0: pooled over equal sample counts, 0.5.
   EXPECT_NEAR(e.mean * e.diagonal, 0.5, 0.03);
 }
+
+// The fold-over share: none on the mesh itself, all of it with every face turned over, and the
+// turned-over faces' share of the area when only some are.
+TEST(FoldOverShare, CountsTheAreaFacingAgainstTheNearestInputFace) {
+  const vrs::Mesh m = vrs_test::icosphere(3);
+  EXPECT_EQ(vrs_bench::fold_over_share(m, m, 20000), 0.0);
+  vrs::Mesh flipped = m;
+  for (size_t f = 0; f < flipped.face_count(); ++f)
+    std::swap(flipped.triangles[3 * f + 1], flipped.triangles[3 * f + 2]);
+  EXPECT_EQ(vrs_bench::fold_over_share(m, flipped, 20000), 1.0);
+  vrs::Mesh half = m; // every other face turned over: about half the area
+  for (size_t f = 0; f < half.face_count(); f += 2)
+    std::swap(half.triangles[3 * f + 1], half.triangles[3 * f + 2]);
+  EXPECT_NEAR(vrs_bench::fold_over_share(m, half, 20000), 0.5, 0.05);
+}

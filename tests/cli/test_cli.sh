@@ -83,6 +83,16 @@ for args in "--faces 3000" "--vertices 2000" "--max-factor 0.0001" "--auto" "--a
     fail "$args: exit $?: $(cat "$out/err")"
   fi
 done
+# Progress: a line per 10 % on stderr with --progress (not a terminal here), none by default or
+# with --quiet.
+"$bin" "$in" "$out/t.ply" --ratio 0.2 --progress >/dev/null 2>"$out/progress"
+grep -q "^simplifying: 100 %" "$out/progress" && [ "$(grep -c "^simplifying:" "$out/progress")" -ge 5 ] &&
+  ok || fail "--progress printed: $(head -c 300 "$out/progress")"
+for quiet in "" --quiet; do
+  # shellcheck disable=SC2086
+  "$bin" "$in" "$out/t.ply" --ratio 0.2 $quiet >/dev/null 2>"$out/progress"
+  [ ! -s "$out/progress" ] && ok || fail "progress printed without --progress ($quiet)"
+done
 "$bin" "$in" "$out/t.ply" --faces 3000 --json | grep -q '"output_faces":300[0-9]\|"output_faces":2999' && ok ||
   fail "--faces 3000 not met"
 
