@@ -6,13 +6,16 @@
 //   vrs_bench --loop MESH LEVELS OUT.ply       Loop subdivision (large inputs)
 //   vrs_bench --terrain K OUT.ply              (2^K + 1)^2 fractal terrain
 // Methods: ours (defaults) with suffixes -factor / -local (priority), -linear / -log (mapping),
-// -heap (exact queue), -intN (N intervals), -projection (the paper's filling only), -boundary
-// (boundary simplified), combinable; qecd, qecd-topology (Preserve Topology on), meshopt, vtk. Each
-// run is a child process, so memory high-water marks do not carry over from one run to the next.
+// -heap (exact queue), -eager (every neighbour re-priced at once), -tN (N threads;
+// default 1 here, so that runs compare), -intN (N intervals), -projection (the paper's filling
+// only), -boundary (boundary simplified), combinable; qecd, qecd-topology (Preserve Topology on),
+// meshopt, vtk. Each run is a child process, so memory high-water marks do not carry over from one
+// run to the next.
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
+#include <cctype>
 #include <cstdio>
 #include <cstdlib>
 #include <sstream>
@@ -48,6 +51,7 @@ bool run_method(const std::string& method, const vrs::Mesh& in, size_t target,
   else if (method.rfind("ours", 0) == 0) {
     // "ours" then any of -factor|-local, -linear|-log, -heap, -intN, e.g. ours-local-heap.
     vrs::Options o;
+    o.threads = 1; // one thread unless -tN: the peers run on one
     std::stringstream parts(method.substr(4));
     std::string p;
     while (std::getline(parts, p, '-')) {
@@ -64,6 +68,10 @@ bool run_method(const std::string& method, const vrs::Mesh& in, size_t target,
         o.fill = vrs::Fill::Projection;
       else if (p == "boundary")
         o.simplify_boundary = true;
+      else if (p.size() > 1 && p[0] == 't' && std::isdigit(static_cast<unsigned char>(p[1])))
+        o.threads = std::atoi(p.c_str() + 1);
+      else if (p == "eager")
+        o.lazy_reevaluation = false;
       else if (p == "heap")
         o.queue = vrs::QueueKind::Heap;
       else if (p.rfind("int", 0) == 0 && p.size() > 3)

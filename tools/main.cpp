@@ -33,6 +33,10 @@ const char* kUsage =
     "                                  fans (default) or with the paper's projection only\n"
     "  --mapping linear|log            factor -> interval mapping (default linear)\n"
     "  --queue intervals|heap          hash table (default) or exact heap (reference)\n"
+    "  --reprice lazy|eager            a removal's queued neighbours are priced again when\n"
+    "                                  popped (default) or at once (the paper's way, slower)\n"
+    "  --threads N                     threads to plan removals on (default 0: all hardware\n"
+    "                                  threads); the output is the same for every N\n"
     "  --simplify-boundary             also remove boundary vertices (default: kept)\n"
     "  --feature-angle DEG             keep edges whose faces turn more than DEG apart as\n"
     "                                  polylines, as texture seams always are (default 0: off)\n"
@@ -176,6 +180,15 @@ int main(int argc, char** argv) {
     } else if (a == "--feature-angle") {
       if (!(v = value()) || !parse_double(v, opt.feature_angle_deg))
         return usage_error("--feature-angle needs degrees in [0, 180]");
+    } else if (a == "--reprice") {
+      if (!(v = value()) || (std::strcmp(v, "lazy") && std::strcmp(v, "eager")))
+        return usage_error("--reprice must be lazy or eager");
+      opt.lazy_reevaluation = !std::strcmp(v, "lazy");
+    } else if (a == "--threads") {
+      size_t n = 0;
+      if (!(v = value()) || !parse_count(v, n) || n > 1024)
+        return usage_error("--threads needs a count in [0, 1024]");
+      opt.threads = static_cast<int>(n);
     } else if (a == "--intervals") {
       size_t n = 0;
       if (!(v = value()) || !parse_count(v, n) || n > (1u << 20))

@@ -25,6 +25,12 @@ class BucketQueue {
 
   // First vertex of the lowest non-empty interval, or kNone. It stays queued until erased.
   uint32_t front() const;
+  // The vertex after v in its interval (kNone: v is its last): a batch is read off the front.
+  uint32_t after(uint32_t v) const { return next_[v]; }
+  // Whether a vertex of this factor, pushed now, would be in the lowest non-empty interval
+  // (or the queue is empty): a vertex popped with a stale priority and priced again is
+  // removed at once when it still leads, else pushed back.
+  bool leads(double factor) const { return size_ == 0 || map_.interval_of(factor) <= lowest(); }
 
   // Re-maps every queued vertex over [0, max factor of the queue], keeping their order. Used
   // when a count target is not met and only the last interval is left: the bucket order is

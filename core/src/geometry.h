@@ -28,6 +28,9 @@ inline Vec3 cross(Vec3 a, Vec3 b) {
 inline double length(Vec3 a) {
   return std::sqrt(dot(a, a));
 }
+inline double triangle_area(Vec3 a, Vec3 b, Vec3 c) {
+  return 0.5 * length(cross(b - a, c - a));
+}
 inline bool is_finite(Vec3 a) {
   return std::isfinite(a.x) && std::isfinite(a.y) && std::isfinite(a.z);
 }

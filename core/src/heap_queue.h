@@ -23,6 +23,9 @@ class HeapQueue {
     return !heap_.empty() && map_.interval_of(heap_[0].factor) == map_.n - 1;
   }
   uint32_t front() const { return heap_.empty() ? kNone : heap_[0].v; }
+  // An exact order has no cheap "next": its batches hold the front alone.
+  uint32_t after(uint32_t) const { return kNone; }
+  bool leads(double factor) const { return heap_.empty() || factor <= heap_[0].factor; }
   void respread(const float*) {} // already exact
   const IntervalMap& map() const { return map_; }
 

@@ -20,6 +20,9 @@ std::string check_options(const Options& o, size_t vertex_count) {
     return "unknown queue";
   if (static_cast<unsigned>(o.mapping) > static_cast<unsigned>(IntervalMapping::Logarithmic))
     return "unknown interval mapping";
+  if (o.threads < 0 || o.threads > 1024)
+    return "threads must be in [0, 1024] (0: all hardware threads), got " +
+           std::to_string(o.threads);
   if (o.intervals < 2 || o.intervals > (1 << 20))
     return "intervals must be in [2, 1048576], got " + std::to_string(o.intervals);
   if (!(o.max_normal_angle_deg > 0.0 && o.max_normal_angle_deg <= 90.0))

@@ -51,7 +51,7 @@ bool star_direction(uint32_t v, const Ring& ring, const Evaluator& eval, Vec3& o
 }
 
 Reject Planner::plan(uint32_t v, const Ring& ring, Vec3 n, Patch& out, double& cost,
-                     bool check_topology, OpenRing open) const {
+                     bool check_topology, OpenRing open, bool price) const {
   const int k = ring.verts;
   if (k < 3 && !(k == 2 && !ring.closed())) return RejectFold;
   project(v, ring, n, *eval_, out);
@@ -78,8 +78,10 @@ Reject Planner::plan(uint32_t v, const Ring& ring, Vec3 n, Patch& out, double& c
     estimate[c] = candidates > 1 ? price_.estimate(v, ring, out) : 0.0;
     order[m++] = uint8_t(c);
   }
-  std::stable_sort(order.begin(), order.begin() + m,
-                   [&](uint8_t x, uint8_t y) { return estimate[x] < estimate[y]; });
+  // Insertion sort: stable, no allocation, and m is small.
+  for (int i = 1; i < m; ++i)
+    for (int j = i; j > 0 && estimate[order[j]] < estimate[order[j - 1]]; --j)
+      std::swap(order[j], order[j - 1]);
   FaceNormals replaced;
   replaced_face_normals(v, ring, out, *eval_, replaced);
   Reject first_why = RejectCount;
@@ -97,7 +99,7 @@ Reject Planner::plan(uint32_t v, const Ring& ring, Vec3 n, Patch& out, double& c
     if (why == RejectCount)
       why = veto_shape(ring, out, replaced, normals_, *limits_, c == 0 || on_plane_);
     if (why == RejectCount) {
-      cost = price_.exact(v, ring, out);
+      cost = price ? price_.exact(v, ring, out) : 0.0;
       return RejectCount;
     }
     if (first_why == RejectCount) first_why = why;
@@ -106,7 +108,7 @@ Reject Planner::plan(uint32_t v, const Ring& ring, Vec3 n, Patch& out, double& c
 }
 
 Reject Planner::plan_seam(uint32_t v, const Ring& ring, int i, int j, Vec3 n, Patch& out,
-                          double& cost, bool check_topology) const {
+                          double& cost, bool check_topology, bool price) const {
   const int k = ring.verts;
   // Two faces back to back (a fin: both sides one triangle) have no side left to fill.
   if (k < 3) return RejectFold;
@@ -127,7 +129,7 @@ Reject Planner::plan_seam(uint32_t v, const Ring& ring, int i, int j, Vec3 n, Pa
       sub.f[r] = ring.f[(first + r) % k];
     double side_cost = 0;
     Reject why = plan(v, sub, n, side, side_cost, check_topology,
-                      on_edge ? OpenRing::SeamSideOnEdge : OpenRing::SeamSide);
+                      on_edge ? OpenRing::SeamSideOnEdge : OpenRing::SeamSide, price);
     if (why != RejectCount) return why;
     cost = std::max(cost, side_cost);
     for (int t = 0; t < side.count; ++t, ++count)

@@ -45,16 +45,18 @@ class Planner {
   // Returns RejectCount when some candidate is valid (the best ranked is in `out`, its exact
   // price in `cost`), else why the best ranked was refused (RejectFold: none could be made).
   // `check_topology` = false skips the mesh look-ups (new triangle / edge already there): a pass
-  // for the priority only, redone in full when the vertex is popped.
+  // for the priority only, redone in full when the vertex is popped. `price` = false skips the
+  // exact price (`cost` is then 0): the pop of a vertex whose price is still today's.
   Reject plan(uint32_t v, const Ring& ring, Vec3 normal, Patch& out, double& cost,
-              bool check_topology = true, OpenRing open = OpenRing::Border) const;
+              bool check_topology = true, OpenRing open = OpenRing::Border,
+              bool price = true) const;
 
   // The removal of a vertex on exactly two constrained edges, to ring positions i < j: the ring
   // is cut along the polyline (ring[i], v, ring[j]) and each side is planned as an open ring
   // closed by the chord (ring[i], ring[j]), which replaces the two constrained edges. `out` is
   // a patch of the whole ring, as plan's; `cost` the larger of the two sides'.
   Reject plan_seam(uint32_t v, const Ring& ring, int i, int j, Vec3 normal, Patch& out,
-                   double& cost, bool check_topology = true) const;
+                   double& cost, bool check_topology = true, bool price = true) const;
 
  private:
   const Evaluator* eval_;

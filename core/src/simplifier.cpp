@@ -10,8 +10,10 @@
 #include "input_check.h"
 #include "local_error.h"
 #include "removal.h"
+#include "spatial_order.h"
 #include "topology.h"
 #include "vrs/simplify.h"
+#include "workers.h"
 
 namespace vrs {
 
@@ -19,6 +21,11 @@ namespace {
 
 constexpr uint8_t kFlagLocked = 1;  // never removed: user lock, or next to a NaN/inf position
 constexpr uint8_t kFlagRemoved = 2; // gone from the mesh
+constexpr uint8_t kFlagStale = 32;  // queued with a price from before its ring last changed
+constexpr uint8_t kFlagTaken = 64;  // in or next to a vertex removed in the current batch
+// Removals planned together, read off the front of the queue. A constant, not the thread
+// count: the output must not depend on it.
+constexpr size_t kBatch = 128;
 // Bits 2-4: the vertex's last plan's Reject (RejectCount: none), for Report::stop_detail.
 constexpr int kRefusedShift = 2;
 constexpr uint8_t kRefusedMask = 7 << kRefusedShift;
@@ -77,17 +84,48 @@ class Simplifier {
   // to the chord that replaces it (also put in `chord`, else 0). +inf factor when v must stay.
   Evaluation evaluate_plane(uint32_t v, const Ring& ring, double* chord = nullptr) const;
   // Priority of v with its current ring (the paper's factor or the planned patch's local
-  // error), or +inf when v must stay.
-  double evaluate(uint32_t v, const Ring& ring);
+  // error), or +inf when v must stay. Reads only (the workers call it); the planned removal's
+  // refusal, if a plan was made, goes to `why` (RejectCount: accepted or not planned) and is
+  // recorded by note().
+  struct Priced {
+    double priority;
+    Reject why = RejectCount;
+    bool planned = false;
+  };
+  Priced evaluate(uint32_t v, const Ring& ring) const;
+  void note(uint32_t v, const Priced& p);
   // Plans v's removal on its evaluated plane, then on a fallback direction; RejectCount = ok,
   // with the chosen patch's local error in `cost`.
   Reject plan(uint32_t v, const Ring& ring, const Evaluation& e, Patch& patch, double& cost,
-              bool check_topology = true);
+              bool check_topology = true, bool price = true) const;
   static double price(const void* self, uint32_t v, const Ring& ring, const Patch& patch);
   static double estimate(const void* self, uint32_t v, const Ring& ring, const Patch& patch);
   bool target_met() const;
   float progress_fraction(size_t queued, size_t queued0) const;
+  // Rewrites the faces; the neighbours are marked stale or put on `reprice_`.
   template <class Queue> void commit(uint32_t v, const Ring& ring, const Patch& patch, Queue& q);
+  // Area of u's faces now, and before v's removal (u = ring.v[i]: its faces i - 1 and i were
+  // replaced by the patch's triangles at i).
+  double fan_area(uint32_t u) const;
+  double fan_area_before(uint32_t v, int i, const Ring& ring, const Patch& patch, double now) const;
+  // Prices the vertices on `reprice_` (on the workers) and queues them again.
+  template <class Queue> void reprice(Queue& queue);
+  // One removal read off the queue's front and planned (on the workers).
+  struct Planned {
+    uint32_t v;
+    bool stale, usable;
+    Reject why;
+    double priority;
+    Ring ring;
+    Patch patch;
+  };
+  // Reads up to kBatch vertices off the front of the queue's lowest interval into batch_.
+  template <class Queue> size_t take_batch(Queue& queue);
+  // Whether p's plan still holds: no removal of this batch was in or next to p's vertex or
+  // its ring (their closed neighbourhoods are marked kFlagTaken by mark_taken).
+  bool still_valid(const Planned& p) const;
+  void mark_taken(uint32_t v, const Ring& ring);
+  void plan_batch(size_t count);
   // The last resort when a count target is not met and nothing is left to remove: lifts the
   // input-normal veto and the outline-corner rule (with boundary simplification on) and
   // queues every removable vertex again. False if it was done already.
@@ -99,7 +137,15 @@ class Simplifier {
   Evaluator eval_;
   RemovalLimits limits_;
   bool last_resort_ = false; // see relax()
+  // Queued neighbours of a removal are re-priced when popped. The paper's factor is the plane
+  // alone, cheap to make at once: lazy only pays where the price is a plan.
+  const bool lazy_ = opt_.lazy_reevaluation && opt_.priority == Priority::LocalError;
   Topology topo_;
+  Workers workers_{opt_.threads > 0 ? opt_.threads : hardware_threads()};
+  std::vector<Planned> batch_;
+  std::vector<uint32_t> reprice_;
+  std::vector<uint32_t> taken_; // vertices marked kFlagTaken in this batch
+  std::vector<Priced> repriced_;
   Planner planner_{eval_, topo_, mesh_.triangles.data(), nullptr, limits_, {}, false};
   std::vector<float> factor_;
   std::vector<float> normals_; // unit vertex normals of the input surface, 3 a vertex
@@ -111,6 +157,7 @@ class Simplifier {
   std::vector<uint32_t> face_source_;   // per face slot: its input face, or kRemoved once rewritten
   std::vector<uint32_t> corner_source_; // per face slot corner: the input corner it carries
   Constraints constraints_;
+  SpatialOrder order_;
   size_t faces_ = 0, vertices_ = 0, target_faces_ = 0, target_vertices_ = 0;
   size_t faces0_ = 0;
   double reference_area_ = 1; // mean input triangle area (LocalError's weight)
@@ -119,12 +166,20 @@ class Simplifier {
 void Simplifier::prepare() {
   const size_t n = mesh_.vertex_count();
   rep_.dropped_degenerate_faces = drop_repeated_corner_faces(mesh_.triangles, face_source_);
+  // Inside, vertices and faces go in spatial order (compact() restores the input's).
+  order_ = spatial_order(mesh_.positions, mesh_.triangles);
+  {
+    std::vector<uint32_t> source(face_source_.size());
+    for (size_t f = 0; f < source.size(); ++f)
+      source[f] = face_source_[order_.face_old[f]];
+    face_source_.swap(source);
+  }
   flags_.assign(n, 0);
   for (uint32_t v = 0; v < n; ++v)
     set_refused(v, RejectCount);
   if (opt_.locked)
     for (size_t v = 0; v < n; ++v)
-      if ((*opt_.locked)[v]) flags_[v] |= kFlagLocked;
+      if ((*opt_.locked)[order_.vertex_old[v]]) flags_[v] |= kFlagLocked;
   // A NaN/inf position poisons every plane it takes part in: lock it and its neighbours.
   const auto& t = mesh_.triangles;
   for (size_t v = 0; v < n; ++v)
@@ -137,7 +192,17 @@ void Simplifier::prepare() {
             flags_[t[i + 2]] |= kFlagLocked;
 
   topo_.build(t, n);
-  rep_.constrained_edges = constraints_.build(opt_, mesh_.positions.data(), t, topo_, n);
+  {
+    Options renumbered = opt_;
+    std::vector<uint32_t> pairs;
+    if (opt_.constrained_edges) {
+      pairs = *opt_.constrained_edges;
+      for (uint32_t& v : pairs)
+        if (v < n) v = order_.vertex_new[v]; // out-of-range pairs stay ignored
+      renumbered.constrained_edges = &pairs;
+    }
+    rep_.constrained_edges = constraints_.build(renumbered, mesh_.positions.data(), t, topo_, n);
+  }
   if (opt_.corner_sources) {
     corner_source_.resize(t.size());
     for (size_t f = 0; f < face_source_.size(); ++f)
@@ -151,9 +216,28 @@ void Simplifier::prepare() {
               opt_.fill == Fill::Best, opt_.mode != Mode::Surface3D);
   factor_.assign(n, std::numeric_limits<float>::infinity());
   faces_ = faces0_ = t.size() / 3;
-  Ring ring;
+  // Every vertex's kind and first price, on the workers (reads only; each writes its own
+  // slots), then the counts in vertex order.
+  constexpr uint8_t kKeptOnConstraints = 128; // beside the VertexKind
+  std::vector<uint8_t> kinds(n);
+  std::vector<Priced> first(n);
+  workers_.for_each(
+      n,
+      [&](size_t i) {
+        const uint32_t v = static_cast<uint32_t>(i);
+        Ring ring;
+        VertexKind kind = topo_.ring(v, t.data(), opt_.max_valence, ring);
+        kinds[v] = static_cast<uint8_t>(kind);
+        if (kind == VertexKind::Isolated || flags_[v] & kFlagLocked || !removable(kind)) return;
+        std::array<int, 2> seam;
+        if (along(v, ring, seam) == Along::Kept)
+          kinds[v] |= kKeptOnConstraints;
+        else
+          first[v] = evaluate(v, ring);
+      },
+      256);
   for (uint32_t v = 0; v < n; ++v) {
-    VertexKind kind = topo_.ring(v, t.data(), opt_.max_valence, ring);
+    const VertexKind kind = static_cast<VertexKind>(kinds[v] & ~kKeptOnConstraints);
     switch (kind) {
     case VertexKind::Isolated: ++rep_.unreferenced_vertices; continue;
     case VertexKind::Boundary:
@@ -168,12 +252,12 @@ void Simplifier::prepare() {
       continue;
     }
     if (!removable(kind)) continue;
-    std::array<int, 2> seam;
-    if (along(v, ring, seam) == Along::Kept) {
+    if (kinds[v] & kKeptOnConstraints) {
       ++rep_.kept_constrained;
       continue;
     }
-    factor_[v] = static_cast<float>(evaluate(v, ring));
+    note(v, first[v]);
+    factor_[v] = static_cast<float>(first[v].priority);
   }
 
   const TargetKind tk = opt_.target.kind;
@@ -207,20 +291,23 @@ Evaluation Simplifier::evaluate_plane(uint32_t v, const Ring& ring, double* chor
   return e;
 }
 
-double Simplifier::evaluate(uint32_t v, const Ring& ring) {
+Simplifier::Priced Simplifier::evaluate(uint32_t v, const Ring& ring) const {
   double chord = 0;
   Evaluation e = evaluate_plane(v, ring, &chord);
-  if (opt_.priority == Priority::Factor || !std::isfinite(e.factor)) return e.factor;
+  if (opt_.priority == Priority::Factor || !std::isfinite(e.factor)) return {e.factor};
   Patch patch;
   double cost = 0;
   // The mesh look-ups wait for the pop, where the plan is made again in full.
   Reject why = plan(v, ring, e, patch, cost, /*check_topology=*/false);
-  set_refused(v, why);
-  if (why != RejectCount) {
-    ++rep_.rejected[why]; // not queued; evaluated again when its ring changes
-    return std::numeric_limits<double>::infinity();
-  }
-  return std::max(cost, chord);
+  if (why != RejectCount) // not queued; evaluated again when its ring changes
+    return {std::numeric_limits<double>::infinity(), why, true};
+  return {std::max(cost, chord), RejectCount, true};
+}
+
+void Simplifier::note(uint32_t v, const Priced& p) {
+  if (!p.planned) return;
+  set_refused(v, p.why);
+  if (p.why != RejectCount) ++rep_.rejected[p.why];
 }
 
 double Simplifier::price(const void* self, uint32_t v, const Ring& ring, const Patch& patch) {
@@ -233,12 +320,14 @@ double Simplifier::estimate(const void* self, uint32_t v, const Ring&, const Pat
 }
 
 Reject Simplifier::plan(uint32_t v, const Ring& ring, const Evaluation& e, Patch& patch,
-                        double& cost, bool check_topology) {
+                        double& cost, bool check_topology, bool price) const {
   std::array<int, 2> seam;
   const bool on_seam = along(v, ring, seam) == Along::Seam;
   auto attempt = [&](Vec3 d) {
-    return on_seam ? planner_.plan_seam(v, ring, seam[0], seam[1], d, patch, cost, check_topology)
-                   : planner_.plan(v, ring, d, patch, cost, check_topology);
+    return on_seam
+               ? planner_.plan_seam(v, ring, seam[0], seam[1], d, patch, cost, check_topology,
+                                    price)
+               : planner_.plan(v, ring, d, patch, cost, check_topology, OpenRing::Border, price);
   };
   Reject why = attempt(e.normal);
   // At tips, creases and thin parts the average plane of a strongly curved ring can fold it
@@ -274,6 +363,35 @@ float Simplifier::progress_fraction(size_t queued, size_t queued0) const {
   default: f = queued0 ? 1.0 - double(queued) / double(queued0) : 1; break;
   }
   return static_cast<float>(std::min(1.0, std::max(0.0, f)));
+}
+
+double Simplifier::fan_area(uint32_t u) const {
+  const uint32_t* tris = mesh_.triangles.data();
+  const uint32_t* faces = topo_.faces_of(u);
+  double sum = 0;
+  for (uint32_t j = 0; j < topo_.valence(u); ++j) {
+    const uint32_t* t = tris + 3 * size_t(faces[j]);
+    sum += triangle_area(eval_.position(t[0]), eval_.position(t[1]), eval_.position(t[2]));
+  }
+  return sum;
+}
+
+double Simplifier::fan_area_before(uint32_t v, int i, const Ring& ring, const Patch& patch,
+                                   double now) const {
+  const int k = ring.verts;
+  const Vec3 c = eval_.position(v);
+  const auto& q = patch.q; // the ring's positions
+  double old_faces = 0, new_faces = 0;
+  // Ring face f holds ring vertices f and f + 1: vertex i was in faces i - 1 and i.
+  const int before = i > 0 ? i - 1 : ring.closed() ? k - 1 : -1;
+  for (int f : {before, i})
+    if (f >= 0 && f < ring.faces) old_faces += triangle_area(c, q[f], q[(f + 1) % k]);
+  for (int t = 0; t < patch.count; ++t) {
+    const auto& tri = patch.tri[t];
+    if (tri[0] == i || tri[1] == i || tri[2] == i)
+      new_faces += triangle_area(q[tri[0]], q[tri[1]], q[tri[2]]);
+  }
+  return now - new_faces + old_faces;
 }
 
 template <class Queue>
@@ -317,21 +435,96 @@ void Simplifier::commit(uint32_t v, const Ring& ring, const Patch& patch, Queue&
   rep_.relaxed_removals += last_resort_;
   rep_.max_removed_factor = std::max(rep_.max_removed_factor, double(factor_[v]));
 
-  // The neighbours' planes and rings changed: re-evaluate them and append them to the back of
-  // their (possibly new) interval.
-  Ring r;
-  const bool by_factor = opt_.target.kind == TargetKind::MaxFactor;
+  // The neighbours' planes and rings changed. Queued ones are priced again when popped (lazy);
+  // the others (refused, or kept until now) are evaluated now and appended to the back of
+  // their interval, as every neighbour is with eager re-evaluation.
   for (int i = 0; i < ring.verts; ++i) {
     uint32_t u = ring.v[i];
     if (flags_[u] & kFlagLocked) continue;
+    if (lazy_ && queue.contains(u)) {
+      // Stale: priced again when popped. Meanwhile its place follows the part of its price
+      // known without a plan: the local error weighs distances by sqrt(fan area), and the
+      // fan's area just changed (the distances are taken as they were). Left in place, a
+      // neighbour whose price fell waits behind where it belongs.
+      flags_[u] |= kFlagStale;
+      const double now = fan_area(u), before = fan_area_before(v, i, ring, patch, now);
+      if (before > 0 && now > 0) {
+        factor_[u] = static_cast<float>(factor_[u] * std::sqrt(now / before));
+        queue.push(u, factor_[u]);
+      }
+    } else
+      reprice_.push_back(u);
+  }
+}
+
+template <class Queue> void Simplifier::reprice(Queue& queue) {
+  // A vertex is next to at most one removal of a batch, so the list has no repeats, and each
+  // price reads only the vertex's own ring.
+  repriced_.resize(reprice_.size());
+  const uint32_t* tris = mesh_.triangles.data();
+  workers_.for_each(reprice_.size(), [&](size_t i) {
+    const uint32_t u = reprice_[i];
+    Ring r;
     VertexKind kind = topo_.ring(u, tris, opt_.max_valence, r);
-    double f = removable(kind) ? evaluate(u, r) : std::numeric_limits<double>::infinity();
+    repriced_[i] =
+        removable(kind) ? evaluate(u, r) : Priced{std::numeric_limits<double>::infinity()};
+  });
+  const bool by_factor = opt_.target.kind == TargetKind::MaxFactor;
+  for (size_t i = 0; i < reprice_.size(); ++i) {
+    const uint32_t u = reprice_[i];
+    const double f = repriced_[i].priority;
+    note(u, repriced_[i]);
     factor_[u] = static_cast<float>(f);
+    flags_[u] &= ~kFlagStale;
     if (std::isfinite(f) && (!by_factor || f <= opt_.target.max_factor))
       queue.push(u, f);
     else
       queue.erase(u);
   }
+  reprice_.clear();
+}
+
+template <class Queue> size_t Simplifier::take_batch(Queue& queue) {
+  if (batch_.size() < kBatch) batch_.resize(kBatch);
+  size_t count = 0;
+  for (uint32_t v = queue.front(); v != kNone && count < kBatch; v = queue.after(v))
+    batch_[count++].v = v;
+  return count;
+}
+
+bool Simplifier::still_valid(const Planned& p) const {
+  if (flags_[p.v] & kFlagTaken) return false;
+  for (int i = 0; i < p.ring.verts; ++i)
+    if (flags_[p.ring.v[i]] & kFlagTaken) return false;
+  return true;
+}
+
+void Simplifier::mark_taken(uint32_t v, const Ring& ring) {
+  for (int i = -1; i < ring.verts; ++i) {
+    const uint32_t u = i < 0 ? v : ring.v[i];
+    if (!(flags_[u] & kFlagTaken)) flags_[u] |= kFlagTaken, taken_.push_back(u);
+  }
+}
+
+void Simplifier::plan_batch(size_t count) {
+  const bool local = opt_.priority == Priority::LocalError;
+  workers_.for_each(count, [&](size_t b) {
+    Planned& p = batch_[b];
+    p.stale = flags_[p.v] & kFlagStale;
+    p.why = RejectCount;
+    p.usable = removable(topo_.ring(p.v, mesh_.triangles.data(), opt_.max_valence, p.ring));
+    if (!p.usable) return;
+    double chord = 0, cost = 0;
+    Evaluation e = evaluate_plane(p.v, p.ring, &chord);
+    if (!std::isfinite(e.factor)) {
+      p.usable = false;
+      return;
+    }
+    // The plan is made again: a diagonal may have become an edge since v was queued. Only a
+    // stale price is made again.
+    p.why = plan(p.v, p.ring, e, p.patch, cost, /*check_topology=*/true, p.stale && local);
+    p.priority = local ? std::max(cost, chord) : e.factor;
+  });
 }
 
 template <class Queue> void Simplifier::run(Queue& queue) {
@@ -343,18 +536,19 @@ template <class Queue> void Simplifier::run(Queue& queue) {
     if (std::isfinite(factor_[v])) map.f_max = std::max(map.f_max, double(factor_[v]));
   queue.init(n, map);
   const bool by_factor = opt_.target.kind == TargetKind::MaxFactor;
-  for (uint32_t v = 0; v < n; ++v)
+  // In the input's order, as the paper fills its table: the FIFO of an interval then follows
+  // the input, not space, and removals spread over the mesh.
+  for (uint32_t i = 0; i < n; ++i) {
+    const uint32_t v = order_.vertex_new[i];
     if (std::isfinite(factor_[v]) && (!by_factor || factor_[v] <= opt_.target.max_factor))
       queue.push(v, factor_[v]);
+  }
 
   const size_t queued0 = queue.size();
   const bool counts = opt_.target.kind == TargetKind::Faces ||
                       opt_.target.kind == TargetKind::Ratio ||
                       opt_.target.kind == TargetKind::Vertices;
-  size_t pops_since_respread = 0, iterations = 0;
-  Ring ring;
-  Patch patch;
-  double cost = 0;
+  size_t pops_since_respread = 0, since_progress = 0;
   for (;;) {
     if (target_met()) {
       rep_.stop = StopReason::TargetReached;
@@ -379,27 +573,47 @@ template <class Queue> void Simplifier::run(Queue& queue) {
         pops_since_respread = 0;
       }
     }
-    if (opt_.progress && (++iterations & 255) == 0 &&
+    if (opt_.progress && since_progress >= 256 &&
         !opt_.progress(progress_fraction(queue.size(), queued0))) {
       rep_.stop = StopReason::Cancelled;
       break;
     }
 
-    const uint32_t v = queue.front();
-    queue.erase(v);
-    ++pops_since_respread;
-    VertexKind kind = topo_.ring(v, mesh_.triangles.data(), opt_.max_valence, ring);
-    if (!removable(kind)) continue;
-    Evaluation e = evaluate_plane(v, ring);
-    if (!std::isfinite(e.factor)) continue;
-    // The plan is made again: a diagonal may have become an edge since v was queued.
-    Reject why = plan(v, ring, e, patch, cost);
-    set_refused(v, why);
-    if (why != RejectCount) {
-      ++rep_.rejected[why]; // retried when a neighbour's removal changes its ring
-      continue;
+    // Read a batch off the front and plan it on the workers against today's mesh; then take
+    // each in queue order as if popped alone: refused, pushed back (a stale price that no
+    // longer leads) or committed. A plan holds only while no removal of the batch touched a
+    // vertex in or next to its own: one that did is left at the front for the next batch.
+    const size_t count = take_batch(queue);
+    plan_batch(count);
+    since_progress = since_progress >= 256 ? count : since_progress + count;
+    for (size_t b = 0; b < count && !target_met(); ++b) {
+      Planned& p = batch_[b];
+      const uint32_t v = p.v;
+      if (!still_valid(p)) continue;
+      queue.erase(v);
+      flags_[v] &= ~kFlagStale;
+      ++pops_since_respread;
+      if (!p.usable) continue;
+      set_refused(v, p.why);
+      if (p.why != RejectCount) {
+        ++rep_.rejected[p.why]; // retried when a neighbour's removal changes its ring
+        continue;
+      }
+      if (p.stale) { // its price is today's only now: it goes only if it still leads
+        factor_[v] = static_cast<float>(p.priority);
+        if (by_factor && !(p.priority <= opt_.target.max_factor)) continue;
+        if (!queue.leads(p.priority)) {
+          queue.push(v, p.priority);
+          continue;
+        }
+      }
+      mark_taken(v, p.ring);
+      commit(v, p.ring, p.patch, queue);
     }
-    commit(v, ring, patch, queue);
+    for (uint32_t u : taken_)
+      flags_[u] &= ~kFlagTaken;
+    taken_.clear();
+    reprice(queue);
   }
   if (opt_.progress && rep_.stop != StopReason::Cancelled) opt_.progress(1.0f);
 }
@@ -422,12 +636,15 @@ template <class Queue> bool Simplifier::relax(Queue& queue) {
   eval_.set_boundary_corner_cos(-1.0);
   Ring ring;
   const uint32_t* tris = mesh_.triangles.data();
-  for (uint32_t v = 0; v < mesh_.vertex_count(); ++v) {
+  for (uint32_t i = 0; i < mesh_.vertex_count(); ++i) {
+    const uint32_t v = order_.vertex_new[i]; // input order, as run() queues
     if (flags_[v] & (kFlagLocked | kFlagRemoved) || topo_.valence(v) == 0) continue;
     if (!removable(topo_.ring(v, tris, opt_.max_valence, ring))) continue;
-    double f = evaluate(v, ring);
-    factor_[v] = static_cast<float>(f);
-    if (std::isfinite(f)) queue.push(v, f);
+    const Priced p = evaluate(v, ring);
+    note(v, p);
+    factor_[v] = static_cast<float>(p.priority);
+    flags_[v] &= ~kFlagStale;
+    if (std::isfinite(p.priority)) queue.push(v, p.priority);
   }
   return !queue.empty();
 }
@@ -484,34 +701,43 @@ std::string Simplifier::explain_stop() const {
 }
 
 void Simplifier::compact() {
-  auto& tris = mesh_.triangles;
-  size_t out = 0;
-  rep_.face_source.clear();
-  rep_.corner_source.clear();
-  for (size_t i = 0; i < tris.size(); i += 3) {
-    if (tris[i] == kNone) continue;
-    rep_.face_source.push_back(face_source_[i / 3]);
-    if (!corner_source_.empty())
-      rep_.corner_source.insert(rep_.corner_source.end(), &corner_source_[i],
-                                &corner_source_[i] + 3);
-    for (int c = 0; c < 3; ++c)
-      tris[out++] = tris[i + c];
-  }
-  tris.resize(out);
-
+  // Back to the input's order: vertices by input index, faces by the input slot they took.
   const size_t n = mesh_.vertex_count();
   auto& pos = mesh_.positions;
   rep_.remap.assign(n, kRemoved);
+  std::vector<uint32_t> out_index(n, kRemoved); // internal vertex -> output index
+  std::vector<float> kept;
+  kept.reserve(pos.size());
   uint32_t next = 0;
-  for (size_t v = 0; v < n; ++v) {
+  for (size_t i = 0; i < n; ++i) {
+    const uint32_t v = order_.vertex_new[i];
     if (flags_[v] & kFlagRemoved) continue;
-    for (int c = 0; c < 3; ++c)
-      pos[3 * next + c] = pos[3 * v + c];
-    rep_.remap[v] = next++;
+    kept.insert(kept.end(), &pos[3 * size_t(v)], &pos[3 * size_t(v)] + 3);
+    rep_.remap[i] = out_index[v] = next++;
   }
-  pos.resize(3 * size_t(next));
-  for (uint32_t& i : tris)
-    i = rep_.remap[i];
+  pos.swap(kept);
+  std::vector<float>().swap(kept);
+
+  auto& tris = mesh_.triangles;
+  const size_t slots = tris.size() / 3;
+  std::vector<uint32_t> slot_of(slots); // input slot -> internal slot
+  for (size_t f = 0; f < slots; ++f)
+    slot_of[order_.face_old[f]] = uint32_t(f);
+  std::vector<uint32_t> out;
+  out.reserve(tris.size());
+  rep_.face_source.clear();
+  rep_.corner_source.clear();
+  for (size_t j = 0; j < slots; ++j) {
+    const size_t f = slot_of[j];
+    if (tris[3 * f] == kNone) continue;
+    rep_.face_source.push_back(face_source_[f]);
+    if (!corner_source_.empty())
+      rep_.corner_source.insert(rep_.corner_source.end(), &corner_source_[3 * f],
+                                &corner_source_[3 * f] + 3);
+    for (int c = 0; c < 3; ++c)
+      out.push_back(out_index[tris[3 * f + c]]);
+  }
+  tris.swap(out);
   rep_.faces = tris.size() / 3;
   rep_.vertices = next;
 }

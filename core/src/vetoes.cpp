@@ -1,5 +1,7 @@
 #include "vetoes.h"
 
+#include <utility>
+
 namespace vrs {
 
 namespace {
@@ -21,16 +23,25 @@ Reject veto_topology(const Ring& ring, const Patch& patch, OpenRing open, const 
   // A triangle cut off the outline must leave its third edge to another face: alone, the
   // triangle is a whole component, and it would vanish.
   if (ring.verts == 2 && topo.edge_faces(ring.v[0], ring.v[1], tris) < 2) return RejectEdge;
+  // A triangle with a new edge can only exist if that edge does: the mesh look-up for the
+  // triangle is needed only then (to name the refusal) or when all its edges are ring edges.
+  // Each diagonal is looked up once although two triangles share it.
+  std::array<uint64_t, kMaxRing + 1> absent{}; // bit b of absent[a], a < b < 64: not an edge
   for (int t = 0; t < patch.count; ++t) {
     const auto& tri = patch.tri[t];
-    if (topo.has_triangle(ring.v[tri[0]], ring.v[tri[1]], ring.v[tri[2]], tris))
-      return RejectTriangle;
+    const uint32_t x = ring.v[tri[0]], y = ring.v[tri[1]], z = ring.v[tri[2]];
+    bool has_new_edge = false;
     for (int e = 0; e < 3; ++e) {
       int a = tri[e], b = tri[(e + 1) % 3];
-      if (!is_ring_edge(ring, a, b, open == OpenRing::SeamSideOnEdge) &&
-          topo.has_edge(ring.v[a], ring.v[b], tris))
-        return RejectEdge;
+      if (is_ring_edge(ring, a, b, open == OpenRing::SeamSideOnEdge)) continue;
+      has_new_edge = true;
+      if (a > b) std::swap(a, b);
+      if (b < 64 && absent[a] >> b & 1) continue;
+      if (topo.has_edge(ring.v[a], ring.v[b], tris))
+        return topo.has_triangle(x, y, z, tris) ? RejectTriangle : RejectEdge;
+      if (b < 64) absent[a] |= uint64_t(1) << b;
     }
+    if (!has_new_edge && topo.has_triangle(x, y, z, tris)) return RejectTriangle;
   }
   return RejectCount;
 }

@@ -74,7 +74,7 @@ for args in "--faces 3000" "--vertices 2000" "--max-factor 0.0001" "--auto" "--a
   "--ratio 0.2 --mode planar" "--ratio 0.2 --simplify-boundary" "--ratio 0.2 --priority factor" \
   "--ratio 0.2 --priority local-error" "--max-factor 0.0001 --priority factor" \
   "--ratio 0.2 --fill projection" "--ratio 0.2 --fill best" "--ratio 0.2 --progress" \
-  "--ratio 0.2 --quiet"; do
+  "--ratio 0.2 --quiet" "--ratio 0.2 --reprice eager" "--ratio 0.2 --threads 1"; do
   # shellcheck disable=SC2086
   if "$bin" "$in" "$out/t.ply" $args --json >"$out/t.json" 2>"$out/err"; then
     f=$(json_num "$out/t.json" output_faces)
@@ -93,6 +93,10 @@ for quiet in "" --quiet; do
   "$bin" "$in" "$out/t.ply" --ratio 0.2 $quiet >/dev/null 2>"$out/progress"
   [ ! -s "$out/progress" ] && ok || fail "progress printed without --progress ($quiet)"
 done
+# The thread count changes nothing in the output file; lazy and eager re-pricing both reach it.
+"$bin" "$in" "$out/th1.ply" --ratio 0.1 --threads 1 >/dev/null &&
+  "$bin" "$in" "$out/th3.ply" --ratio 0.1 --threads 3 >/dev/null &&
+  cmp -s "$out/th1.ply" "$out/th3.ply" && ok || fail "--threads 1 and --threads 3 outputs differ"
 "$bin" "$in" "$out/t.ply" --faces 3000 --json | grep -q '"output_faces":300[0-9]\|"output_faces":2999' && ok ||
   fail "--faces 3000 not met"
 
@@ -113,6 +117,8 @@ expect_exit 1 "ratio must be in" "$bin" "$in" "$out/never.ply" --ratio 2
 expect_exit 2 "--mode must be" "$bin" "$in" "$out/never.ply" --mode cubist
 expect_exit 2 "--priority must be" "$bin" "$in" "$out/never.ply" --priority best
 expect_exit 2 "--fill must be" "$bin" "$in" "$out/never.ply" --fill ears
+expect_exit 2 "--reprice must be" "$bin" "$in" "$out/never.ply" --reprice sometimes
+expect_exit 2 "--threads needs" "$bin" "$in" "$out/never.ply" --threads -2
 expect_exit 1 "intervals" "$bin" "$in" "$out/never.ply" --intervals 1
 expect_exit 2 "required" "$bin" "$in"
 expect_exit 3 "cannot write" "$bin" "$in" "$out/no/such/dir/x.ply"

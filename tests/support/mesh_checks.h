@@ -60,8 +60,8 @@ std::string check_corner_sources(const vrs::Mesh& in, const vrs::Mesh& out, cons
 std::string check_run(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Options& o,
                       const vrs::Report& r);
 
-// Determinism: simplifying `in` with `o` again must give `first` bit for bit and the same stop
-// reason as `first_report`. "" when so.
+// Determinism: simplifying `in` with `o` again, on another thread count (1 or 2), must give
+// `first` bit for bit and the same stop reason and removals as `first_report`. "" when so.
 std::string check_rerun(const vrs::Mesh& in, const vrs::Options& o, const vrs::Mesh& first,
                         const vrs::Report& first_report);
 

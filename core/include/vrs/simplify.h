@@ -112,6 +112,14 @@ struct Options {
   // Edges whose two faces' normals turn more than this many degrees apart are constrained too
   // (creases, as vtkDecimatePro's feature angle). 0 = off; in [0, 180].
   double feature_angle_deg = 0.0;
+  // With Priority::LocalError, after a removal the neighbours still queued are only marked
+  // stale and priced again when popped (pushed back if they no longer lead the queue); false
+  // prices them all at once (the paper's way, and always with Priority::Factor, whose price
+  // is cheap). Lazy halves the work or better; a neighbour whose price fell waits in place.
+  bool lazy_reevaluation = true;
+  // Threads to plan removals on (0: the machine's hardware threads). The output is the same
+  // whatever the number: independent removals are planned together, committed in queue order.
+  int threads = 0;
   // Fill Report::corner_source, so that per-corner data (texture coordinates, normals, colors
   // stored per face corner) can follow the simplification. Costs 12 bytes a face.
   bool corner_sources = false;

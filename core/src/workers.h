@@ -1,0 +1,48 @@
+// A fixed set of threads that run one loop at a time (fork-join). The simplifier hands it the
+// read-only work of a batch (planning independent removals, pricing neighbours); whoever
+// computes item i, its result goes to slot i, so the output does not depend on the threads.
+#pragma once
+
+#include <atomic>
+#include <condition_variable>
+#include <cstddef>
+#include <functional>
+#include <mutex>
+#include <thread>
+#include <vector>
+
+namespace vrs {
+
+class Workers {
+ public:
+  // `threads` in total, the caller's included (1: everything runs on the caller).
+  explicit Workers(int threads);
+  ~Workers();
+  Workers(const Workers&) = delete;
+  Workers& operator=(const Workers&) = delete;
+
+  int threads() const { return int(pool_.size()) + 1; }
+
+  // Calls fn(i) for every i in [0, n) and returns when all calls are done. Items are handed
+  // out `grain` at a time to whichever thread is free.
+  void for_each(size_t n, const std::function<void(size_t)>& fn, size_t grain = 4);
+
+ private:
+  void serve();
+  void work();
+
+  std::vector<std::thread> pool_;
+  std::mutex mutex_;
+  std::condition_variable wake_, done_;
+  const std::function<void(size_t)>* fn_ = nullptr;
+  size_t n_ = 0, grain_ = 1;
+  std::atomic<size_t> next_{0};
+  size_t generation_ = 0;
+  int busy_ = 0;
+  bool quit_ = false;
+};
+
+// The number of threads Options::threads = 0 stands for: the machine's hardware threads.
+int hardware_threads();
+
+} // namespace vrs

@@ -1,0 +1,49 @@
+#!/usr/bin/env bash
+# Speed and memory beside meshoptimizer and MeshLab's QECD, side by side in one run: bunny00
+# Loop-subdivided to 1.2 M and 4.8 M faces, at 10 %, our core on 1 and 2 threads and
+# meshoptimizer alternated REPEATS times (medians), QECD once. --scaling adds the time per
+# input face from 75 k to 19 M faces (one run each). Writes bench/speed.csv and bench/SPEED.md
+# (bench/make_report.sh puts it into bench/REPORT.md).
+#   scripts/bench_speed.sh [--scaling] [--repeats N]
+set -euo pipefail
+top=$(cd "$(dirname "$0")/.." && pwd)
+scaling=0 repeats=3
+while [ $# -gt 0 ]; do
+  case $1 in
+  --scaling) scaling=1; shift ;;
+  --repeats) repeats=$2; shift 2 ;;
+  *) echo "unknown option $1" >&2; exit 2 ;;
+  esac
+done
+"$top/scripts/setup.sh"
+"$top/scripts/build.sh" >/dev/null
+bench=$top/build/bin/vrs_bench
+data=$top/third_party/cgal-data/data/meshes
+inputs=$top/third_party/bench-inputs
+mkdir -p "$inputs"
+levels="2 3"
+[ $scaling -eq 1 ] && levels="1 2 3 4"
+for l in $levels; do
+  [ -s "$inputs/bunny_loop$l.ply" ] || "$bench" --loop "$data/bunny00.off" "$l" "$inputs/bunny_loop$l.ply" >&2
+done
+csv=$top/bench/speed.csv
+first=--header
+: >"$csv"
+run() { # mesh-file name methods
+  echo "== $2: $3" >&2
+  "$bench" "$1" --name "$2" --ratios 0.1 --methods "$3" --samples 1000 $first >>"$csv" ||
+    echo "some runs on $2 failed: see their rows" >&2
+  first=
+}
+alternated=
+for _ in $(seq "$repeats"); do alternated+=ours,ours-t2,meshopt,; done
+for l in 2 3; do
+  run "$inputs/bunny_loop$l.ply" "bunny_loop$l" "${alternated}qecd"
+done
+if [ $scaling -eq 1 ]; then
+  run "$data/bunny00.off" bunny00 "$alternated"
+  run "$inputs/bunny_loop1.ply" bunny_loop1 "$alternated"
+  run "$inputs/bunny_loop4.ply" bunny_loop4 ours,ours-t2,meshopt
+fi
+python3 "$top/bench/speed_report.py" "$csv" "$top/bench/SPEED.md"
+echo "wrote $csv and bench/SPEED.md" >&2

@@ -1,0 +1,140 @@
+// The workers, and the promise that the output does not depend on the thread count (nor does
+// a lazy or eager re-pricing break an invariant).
+#include <gtest/gtest.h>
+
+#include <atomic>
+
+#include "mesh_checks.h"
+#include "test_meshes.h"
+#include "workers.h"
+
+using namespace vrs;
+
+TEST(Workers, EveryItemRunsOnceWhateverTheThreadsAndGrain) {
+  for (int threads : {1, 2, 3, 8})
+    for (size_t grain : {size_t(1), size_t(4), size_t(100)})
+      for (size_t n : {size_t(0), size_t(1), size_t(5), size_t(1000)}) {
+        Workers w(threads);
+        EXPECT_EQ(w.threads(), threads);
+        std::vector<std::atomic<int>> hits(n);
+        for (int round = 0; round < 3; ++round) // the same threads serve loop after loop
+          w.for_each(
+              n, [&](size_t i) { hits[i].fetch_add(1); }, grain);
+        for (size_t i = 0; i < n; ++i)
+          ASSERT_EQ(hits[i].load(), 3) << "item " << i << ", " << threads << " threads";
+      }
+}
+
+namespace {
+
+struct Outcome {
+  Mesh mesh;
+  Report report;
+};
+
+Outcome run(const Mesh& in, Options o, int threads) {
+  Outcome r{in, {}};
+  o.threads = threads;
+  r.report = simplify(r.mesh, o);
+  return r;
+}
+
+void expect_same(const Outcome& a, const Outcome& b, const std::string& what) {
+  EXPECT_TRUE(vrs_test::same_bits(a.mesh, b.mesh)) << what;
+  EXPECT_EQ(a.report.removed, b.report.removed) << what;
+  EXPECT_EQ(a.report.stop, b.report.stop) << what;
+  EXPECT_EQ(a.report.stop_detail, b.report.stop_detail) << what;
+  EXPECT_EQ(a.report.relaxed_removals, b.report.relaxed_removals) << what;
+  for (int r = 0; r < RejectCount; ++r)
+    EXPECT_EQ(a.report.rejected[r], b.report.rejected[r]) << what << ", " << reject_name(Reject(r));
+  EXPECT_EQ(a.report.face_source, b.report.face_source) << what;
+  EXPECT_EQ(a.report.corner_source, b.report.corner_source) << what;
+  EXPECT_EQ(a.report.max_removed_factor, b.report.max_removed_factor) << what;
+}
+
+} // namespace
+
+TEST(Threads, SameOutputAndReportWhateverTheThreadCount) {
+  struct Case {
+    std::string name;
+    Mesh mesh;
+  };
+  std::vector<Case> cases = {{"terrain", vrs_test::terrain(40)},
+                             {"icosphere", vrs_test::icosphere(4)}};
+  for (const char* name : {"elephant", "fandisk", "mushroom"}) {
+    const std::string path = vrs_test::cgal_mesh(std::string(name) + ".off");
+    if (!path.empty()) cases.push_back({name, vrs_test::read_off(path)});
+  }
+  ASSERT_GE(cases.size(), 5u) << "CGAL's data set is missing";
+  for (const Case& c : cases)
+    for (int variant = 0; variant < 7; ++variant) {
+      Options o;
+      o.target.ratio = variant == 6 ? 0.01 : 0.1;
+      o.corner_sources = true;
+      switch (variant) {
+      case 1: o.simplify_boundary = true; break;
+      case 2: o.priority = Priority::Factor; break;
+      case 3: o.lazy_reevaluation = false; break;
+      case 4: o.feature_angle_deg = 40; break;
+      case 5: o.mode = c.name == "terrain" ? Mode::Terrain25D : Mode::Surface3D; break;
+      default: break;
+      }
+      const Outcome one = run(c.mesh, o, 1);
+      ASSERT_TRUE(one.report.ok) << one.report.message;
+      ASSERT_EQ(vrs_test::check_run(c.mesh, one.mesh, o, one.report), "") << c.name;
+      EXPECT_LT(one.mesh.face_count(), c.mesh.face_count()) << c.name;
+      for (int threads : {2, 3, 8})
+        expect_same(one, run(c.mesh, o, threads),
+                    c.name + " variant " + std::to_string(variant) + ", " +
+                        std::to_string(threads) + " threads against 1");
+    }
+}
+
+TEST(Threads, CancellingStopsAtTheSameRemovalWhateverTheThreadCount) {
+  const Mesh in = vrs_test::icosphere(5);
+  std::vector<Mesh> outs;
+  for (int threads : {1, 2}) {
+    Options o;
+    o.target.ratio = 0.05;
+    o.threads = threads;
+    int calls = 0;
+    o.progress = [&](float) { return ++calls < 4; };
+    Mesh m = in;
+    Report r = simplify(m, o);
+    ASSERT_EQ(r.stop, StopReason::Cancelled);
+    ASSERT_EQ(vrs_test::check_valid(in, m, r), "");
+    outs.push_back(m);
+  }
+  EXPECT_TRUE(vrs_test::same_bits(outs[0], outs[1]));
+}
+
+TEST(Threads, ABadCountIsRefusedAndTheMeshLeftAlone) {
+  const Mesh in = vrs_test::icosphere(2);
+  for (int threads : {-1, 5000}) {
+    Mesh m = in;
+    Options o;
+    o.threads = threads;
+    Report r = simplify(m, o);
+    EXPECT_FALSE(r.ok);
+    EXPECT_NE(r.message.find("threads"), std::string::npos) << r.message;
+    EXPECT_TRUE(vrs_test::same_bits(in, m));
+  }
+}
+
+TEST(Reevaluation, LazyAndEagerBothKeepEveryInvariantAndReachTheTarget) {
+  for (const char* name : {"elephant", "fandisk", "bunny00"}) {
+    const std::string path = vrs_test::cgal_mesh(std::string(name) + ".off");
+    ASSERT_FALSE(path.empty()) << "CGAL's data set is missing";
+    const Mesh in = vrs_test::read_off(path);
+    for (bool lazy : {true, false})
+      for (double ratio : {0.5, 0.1}) {
+        Options o;
+        o.target.ratio = ratio;
+        o.lazy_reevaluation = lazy;
+        Mesh m = in;
+        Report r = simplify(m, o);
+        ASSERT_EQ(vrs_test::check_run(in, m, o, r), "") << name << (lazy ? " lazy" : " eager");
+        EXPECT_TRUE(r.target_reached) << name << (lazy ? " lazy " : " eager ") << ratio;
+      }
+  }
+}
