@@ -2,6 +2,7 @@
 // (intrusive prev/next, so unlink and append are O(1) and nothing is allocated after init).
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <vector>
 
@@ -18,6 +19,12 @@ class BucketQueue {
   // this spreads removals over the mesh instead of eating one region).
   void push(uint32_t v, double factor);
   void erase(uint32_t v);
+  // A queued vertex's factor changed: it moves to the back of its new interval, or stays where
+  // it is when the interval is the same.
+  void update(uint32_t v, double factor) {
+    const int i = map_.interval_of(factor);
+    if (i != int(where_[v])) erase(v), link_back(v, i);
+  }
   bool contains(uint32_t v) const { return where_[v] != kNone; }
   size_t size() const { return size_; }
   bool empty() const { return size_ == 0; }
@@ -25,12 +32,17 @@ class BucketQueue {
 
   // First vertex of the lowest non-empty interval, or kNone. It stays queued until erased.
   uint32_t front() const;
-  // The vertex after v in its interval (kNone: v is its last): a batch is read off the front.
-  uint32_t after(uint32_t v) const { return next_[v]; }
-  // Whether a vertex of this factor, pushed now, would be in the lowest non-empty interval
-  // (or the queue is empty): a vertex popped with a stale priority and priced again is
-  // removed at once when it still leads, else pushed back.
-  bool leads(double factor) const { return size_ == 0 || map_.interval_of(factor) <= lowest(); }
+  // The vertex after v in queue order: next in its interval, else the head of the next
+  // non-empty one (kNone: v is the last). A batch is read off the front this way.
+  uint32_t after(uint32_t v) const;
+  // Interval of a queued vertex.
+  int interval(uint32_t v) const { return int(where_[v]); }
+  // Whether a vertex of this factor, pushed now, would be in the lowest non-empty interval or
+  // no later than `from` (the interval it was read off): a vertex popped with a stale priority
+  // and priced again is removed at once when it still leads, else pushed back.
+  bool leads(double factor, int from) const {
+    return size_ == 0 || map_.interval_of(factor) <= std::max(lowest(), from);
+  }
 
   // Re-maps every queued vertex over [0, max factor of the queue], keeping their order. Used
   // when a count target is not met and only the last interval is left: the bucket order is

@@ -15,6 +15,7 @@ class HeapQueue {
   void init(size_t vertex_count, const IntervalMap& map);
   void push(uint32_t v, double factor);
   void erase(uint32_t v);
+  void update(uint32_t v, double factor) { push(v, factor); }
   bool contains(uint32_t v) const { return pos_[v] != kNone; }
   size_t size() const { return heap_.size(); }
   bool empty() const { return heap_.empty(); }
@@ -25,7 +26,8 @@ class HeapQueue {
   uint32_t front() const { return heap_.empty() ? kNone : heap_[0].v; }
   // An exact order has no cheap "next": its batches hold the front alone.
   uint32_t after(uint32_t) const { return kNone; }
-  bool leads(double factor) const { return heap_.empty() || factor <= heap_[0].factor; }
+  int interval(uint32_t) const { return -1; }
+  bool leads(double factor, int) const { return heap_.empty() || factor <= heap_[0].factor; }
   void respread(const float*) {} // already exact
   const IntervalMap& map() const { return map_; }
 

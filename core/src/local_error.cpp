@@ -5,31 +5,36 @@
 
 namespace vrs {
 
-double point_triangle_distance(Vec3 p, Vec3 a, Vec3 b, Vec3 c) {
+double point_triangle_distance2(Vec3 p, Vec3 a, Vec3 b, Vec3 c) {
   // Voronoi regions of the triangle's vertices, edges and face, in that order.
+  auto len2 = [](Vec3 d) { return dot(d, d); };
   Vec3 ab = b - a, ac = c - a, ap = p - a;
   double d1 = dot(ab, ap), d2 = dot(ac, ap);
-  if (d1 <= 0 && d2 <= 0) return length(ap);
+  if (d1 <= 0 && d2 <= 0) return len2(ap);
   Vec3 bp = p - b;
   double d3 = dot(ab, bp), d4 = dot(ac, bp);
-  if (d3 >= 0 && d4 <= d3) return length(bp);
+  if (d3 >= 0 && d4 <= d3) return len2(bp);
   double vc = d1 * d4 - d3 * d2;
-  if (vc <= 0 && d1 >= 0 && d3 <= 0) return length(p - (a + ab * (d1 / (d1 - d3))));
+  if (vc <= 0 && d1 >= 0 && d3 <= 0) return len2(p - (a + ab * (d1 / (d1 - d3))));
   Vec3 cp = p - c;
   double d5 = dot(ab, cp), d6 = dot(ac, cp);
-  if (d6 >= 0 && d5 <= d6) return length(cp);
+  if (d6 >= 0 && d5 <= d6) return len2(cp);
   double vb = d5 * d2 - d1 * d6;
-  if (vb <= 0 && d2 >= 0 && d6 <= 0) return length(p - (a + ac * (d2 / (d2 - d6))));
+  if (vb <= 0 && d2 >= 0 && d6 <= 0) return len2(p - (a + ac * (d2 / (d2 - d6))));
   double va = d3 * d6 - d5 * d4;
   if (va <= 0 && (d4 - d3) >= 0 && (d5 - d6) >= 0) {
     double w = (d4 - d3) / ((d4 - d3) + (d5 - d6));
-    return length(p - (b + (c - b) * w));
+    return len2(p - (b + (c - b) * w));
   }
   double denom = va + vb + vc;
   if (!(std::fabs(denom) > 0)) // no area: the nearest of its edges
-    return std::min({length(ap), length(bp), length(cp)});
+    return std::min({len2(ap), len2(bp), len2(cp)});
   double v = vb / denom, w = vc / denom;
-  return length(p - (a + ab * v + ac * w));
+  return len2(p - (a + ab * v + ac * w));
+}
+
+double point_triangle_distance(Vec3 p, Vec3 a, Vec3 b, Vec3 c) {
+  return std::sqrt(point_triangle_distance2(p, a, b, c));
 }
 
 namespace {
@@ -59,9 +64,11 @@ double patch_error(uint32_t v, const Ring& ring, const Patch& patch, const Evalu
     area += 0.5 * length(x);
     old_n[i] = normalized(x);
   }
+  // Squared distances throughout (one square root at the end).
   auto to_old = [&](Vec3 x, int i, double best) {
-    if (std::fabs(dot(x - c, old_n[i])) >= best) return best;
-    return std::min(best, point_triangle_distance(x, c, q[i], q[(i + 1) % k]));
+    const double h = dot(x - c, old_n[i]);
+    if (h * h >= best) return best;
+    return std::min(best, point_triangle_distance2(x, c, q[i], q[(i + 1) % k]));
   };
   // The old fan projects without folds along the patch's normal, so a point of the new patch
   // lies over one old triangle: measure to it and its two neighbours (to all of them if
@@ -74,7 +81,7 @@ double patch_error(uint32_t v, const Ring& ring, const Patch& patch, const Evalu
       int j = (i + 1) % k;
       if (!(orient2d(o, p[i], s) >= 0 && orient2d(o, s, p[j]) >= 0 && orient2d(p[i], p[j], s) >= 0))
         continue;
-      d = point_triangle_distance(x, c, q[i], q[j]);
+      d = point_triangle_distance2(x, c, q[i], q[j]);
       if (i > 0 || ring.closed()) d = to_old(x, (i + k - 1) % k, d);
       if (j < ring.faces) d = to_old(x, j, d);
       return d;
@@ -114,12 +121,19 @@ double patch_error(uint32_t v, const Ring& ring, const Patch& patch, const Evalu
   for (int n = 0; n < patch.count; ++n) {
     const auto& tri = patch.tri[(first + n) % patch.count];
     Vec3 a = q[tri[0]], b = q[tri[1]], d = q[tri[2]];
-    if (n > 0 && std::fabs(dot(c - a, normalized(cross(b - a, d - a)))) >= to_new) continue;
-    to_new = std::min(to_new, point_triangle_distance(c, a, b, d));
+    if (n > 0) { // plane distance^2 = dot(c - a, m)^2 / |m|^2
+      const Vec3 m = cross(b - a, d - a);
+      const double h = dot(c - a, m), mm = dot(m, m);
+      if (mm > 0 && h * h >= to_new * mm) continue;
+    }
+    to_new = std::min(to_new, point_triangle_distance2(c, a, b, d));
   }
   // A triangle cut off (no patch): the surface now ends at the edge between the two neighbours.
-  if (patch.count == 0 && k == 2) to_new = distance_to_segment(c, q[0], q[1]);
-  return std::max(worst, to_new) * std::sqrt(area / reference_area);
+  if (patch.count == 0 && k == 2) {
+    const double d = distance_to_segment(c, q[0], q[1]);
+    to_new = d * d;
+  }
+  return std::sqrt(std::max(worst, to_new)) * std::sqrt(area / reference_area);
 }
 
 double drop_height(uint32_t v, const Patch& patch, const Evaluator& eval) {

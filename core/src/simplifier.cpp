@@ -26,6 +26,7 @@ constexpr uint8_t kFlagTaken = 64;  // in or next to a vertex removed in the cur
 // Removals planned together, read off the front of the queue. A constant, not the thread
 // count: the output must not depend on it.
 constexpr size_t kBatch = 128;
+constexpr int kBatchSpan = 16; // intervals above the lowest a batch may reach into
 // Bits 2-4: the vertex's last plan's Reject (RejectCount: none), for Report::stop_detail.
 constexpr int kRefusedShift = 2;
 constexpr uint8_t kRefusedMask = 7 << kRefusedShift;
@@ -102,24 +103,31 @@ class Simplifier {
   static double estimate(const void* self, uint32_t v, const Ring& ring, const Patch& patch);
   bool target_met() const;
   float progress_fraction(size_t queued, size_t queued0) const;
-  // Rewrites the faces; the neighbours are marked stale or put on `reprice_`.
-  template <class Queue> void commit(uint32_t v, const Ring& ring, const Patch& patch, Queue& q);
-  // Area of u's faces now, and before v's removal (u = ring.v[i]: its faces i - 1 and i were
-  // replaced by the patch's triangles at i).
-  double fan_area(uint32_t u) const;
-  double fan_area_before(uint32_t v, int i, const Ring& ring, const Patch& patch, double now) const;
+  // A removal is committed in two steps: account() on the caller's thread, in queue order
+  // (counts, seams, the neighbours' prices: marked stale or put on `reprice_`), then
+  // rewrite() of the faces and their lists, on the workers: the removals of a batch touch
+  // disjoint vertices.
+  template <class Queue> void account(uint32_t v, const Ring& ring, const Patch& patch, Queue& q);
+  struct Planned;
+  void rewrite(Planned& p);
+  // How v's removal changes the area of the faces around u = ring.v[i]: its faces i - 1 and
+  // i are replaced by the patch's triangles at i.
+  double fan_area_change(uint32_t v, int i, const Ring& ring, const Patch& patch) const;
   // Prices the vertices on `reprice_` (on the workers) and queues them again.
   template <class Queue> void reprice(Queue& queue);
   // One removal read off the queue's front and planned (on the workers).
   struct Planned {
+    std::array<std::pair<uint32_t, uint32_t>, 3 * kMaxRing> overflow; // (vertex, face) to add
+    int overflows = 0;
     uint32_t v;
+    int from; // the interval it was read off
     bool stale, usable;
     Reject why;
     double priority;
     Ring ring;
     Patch patch;
   };
-  // Reads up to kBatch vertices off the front of the queue's lowest interval into batch_.
+  // Reads the first kBatch vertices of the queue into batch_.
   template <class Queue> size_t take_batch(Queue& queue);
   // Whether p's plan still holds: no removal of this batch was in or next to p's vertex or
   // its ring (their closed neighbourhoods are marked kFlagTaken by mark_taken).
@@ -144,11 +152,13 @@ class Simplifier {
   Workers workers_{opt_.threads > 0 ? opt_.threads : hardware_threads()};
   std::vector<Planned> batch_;
   std::vector<uint32_t> reprice_;
-  std::vector<uint32_t> taken_; // vertices marked kFlagTaken in this batch
+  std::vector<uint32_t> taken_;     // vertices marked kFlagTaken in this batch
+  std::vector<uint32_t> committed_; // batch_ entries accounted, to rewrite
   std::vector<Priced> repriced_;
   Planner planner_{eval_, topo_, mesh_.triangles.data(), nullptr, limits_, {}, false};
   std::vector<float> factor_;
-  std::vector<float> normals_; // unit vertex normals of the input surface, 3 a vertex
+  std::vector<float> fan_area_; // area of each vertex's faces (kept up to date with lazy_)
+  std::vector<float> normals_;  // unit vertex normals of the input surface, 3 a vertex
   std::vector<uint8_t> flags_;
   void set_refused(uint32_t v, Reject why) {
     flags_[v] = uint8_t((flags_[v] & ~kRefusedMask) | (why << kRefusedShift));
@@ -211,6 +221,15 @@ void Simplifier::prepare() {
   }
   normals_ = vertex_normals(mesh_.positions, t);
   reference_area_ = mean_triangle_area(mesh_.positions.data(), t);
+  if (lazy_) {
+    fan_area_.assign(n, 0.0f);
+    for (size_t i = 0; i < t.size(); i += 3) {
+      const float a = static_cast<float>(
+          triangle_area(eval_.position(t[i]), eval_.position(t[i + 1]), eval_.position(t[i + 2])));
+      for (int c = 0; c < 3; ++c)
+        fan_area_[t[i + c]] += a;
+    }
+  }
   planner_ =
       Planner(eval_, topo_, t.data(), normals_.data(), limits_, Pricer{&estimate, &price, this},
               opt_.fill == Fill::Best, opt_.mode != Mode::Surface3D);
@@ -365,19 +384,7 @@ float Simplifier::progress_fraction(size_t queued, size_t queued0) const {
   return static_cast<float>(std::min(1.0, std::max(0.0, f)));
 }
 
-double Simplifier::fan_area(uint32_t u) const {
-  const uint32_t* tris = mesh_.triangles.data();
-  const uint32_t* faces = topo_.faces_of(u);
-  double sum = 0;
-  for (uint32_t j = 0; j < topo_.valence(u); ++j) {
-    const uint32_t* t = tris + 3 * size_t(faces[j]);
-    sum += triangle_area(eval_.position(t[0]), eval_.position(t[1]), eval_.position(t[2]));
-  }
-  return sum;
-}
-
-double Simplifier::fan_area_before(uint32_t v, int i, const Ring& ring, const Patch& patch,
-                                   double now) const {
+double Simplifier::fan_area_change(uint32_t v, int i, const Ring& ring, const Patch& patch) const {
   const int k = ring.verts;
   const Vec3 c = eval_.position(v);
   const auto& q = patch.q; // the ring's positions
@@ -391,11 +398,13 @@ double Simplifier::fan_area_before(uint32_t v, int i, const Ring& ring, const Pa
     if (tri[0] == i || tri[1] == i || tri[2] == i)
       new_faces += triangle_area(q[tri[0]], q[tri[1]], q[tri[2]]);
   }
-  return now - new_faces + old_faces;
+  return new_faces - old_faces;
 }
 
-template <class Queue>
-void Simplifier::commit(uint32_t v, const Ring& ring, const Patch& patch, Queue& queue) {
+void Simplifier::rewrite(Planned& p) {
+  const uint32_t v = p.v;
+  const Ring& ring = p.ring;
+  const Patch& patch = p.patch;
   uint32_t* tris = mesh_.triangles.data();
   // Old faces leave their corners' lists; new faces take the first slots (the array never
   // grows: k or k-1 faces out, k-2 in), the rest are marked dead until compaction.
@@ -414,8 +423,7 @@ void Simplifier::commit(uint32_t v, const Ring& ring, const Patch& patch, Queue&
         int at = tris[3 * f] == u ? 0 : tris[3 * f + 1] == u ? 1 : 2;
         inherited[t][c] = corner_source_[3 * f + at];
       }
-  std::array<int, 2> seam;
-  if (along(v, ring, seam) == Along::Seam) constraints_.merge(v, ring.v[seam[0]], ring.v[seam[1]]);
+  p.overflows = 0;
   for (int i = 0; i < ring.faces; ++i) {
     uint32_t f = ring.f[i];
     face_source_[f] = kRemoved;
@@ -424,10 +432,18 @@ void Simplifier::commit(uint32_t v, const Ring& ring, const Patch& patch, Queue&
         corner_source_[3 * f + c] = inherited[i][c];
     for (int c = 0; c < 3; ++c) {
       tris[3 * f + c] = i < patch.count ? ring.v[patch.tri[i][c]] : kNone;
-      if (i < patch.count) topo_.add_face(tris[3 * f + c], f);
+      // A full list grows after the batch, on one thread (growing moves the shared pool).
+      if (i < patch.count && !topo_.add_face_in_place(tris[3 * f + c], f))
+        p.overflow[p.overflows++] = {tris[3 * f + c], f};
     }
   }
   topo_.clear(v);
+}
+
+template <class Queue>
+void Simplifier::account(uint32_t v, const Ring& ring, const Patch& patch, Queue& queue) {
+  std::array<int, 2> seam;
+  if (along(v, ring, seam) == Along::Seam) constraints_.merge(v, ring.v[seam[0]], ring.v[seam[1]]);
   flags_[v] |= kFlagRemoved;
   faces_ -= static_cast<size_t>(ring.faces - patch.count);
   --vertices_;
@@ -439,7 +455,9 @@ void Simplifier::commit(uint32_t v, const Ring& ring, const Patch& patch, Queue&
   // the others (refused, or kept until now) are evaluated now and appended to the back of
   // their interval, as every neighbour is with eager re-evaluation.
   for (int i = 0; i < ring.verts; ++i) {
-    uint32_t u = ring.v[i];
+    const uint32_t u = ring.v[i];
+    const float before = lazy_ ? fan_area_[u] : 0.0f;
+    if (lazy_) fan_area_[u] = static_cast<float>(before + fan_area_change(v, i, ring, patch));
     if (flags_[u] & kFlagLocked) continue;
     if (lazy_ && queue.contains(u)) {
       // Stale: priced again when popped. Meanwhile its place follows the part of its price
@@ -447,13 +465,13 @@ void Simplifier::commit(uint32_t v, const Ring& ring, const Patch& patch, Queue&
       // fan's area just changed (the distances are taken as they were). Left in place, a
       // neighbour whose price fell waits behind where it belongs.
       flags_[u] |= kFlagStale;
-      const double now = fan_area(u), before = fan_area_before(v, i, ring, patch, now);
-      if (before > 0 && now > 0) {
-        factor_[u] = static_cast<float>(factor_[u] * std::sqrt(now / before));
-        queue.push(u, factor_[u]);
+      if (before > 0 && fan_area_[u] > 0) {
+        factor_[u] = static_cast<float>(factor_[u] * std::sqrt(fan_area_[u] / before));
+        queue.update(u, factor_[u]);
       }
-    } else
+    } else {
       reprice_.push_back(u);
+    }
   }
 }
 
@@ -487,8 +505,15 @@ template <class Queue> void Simplifier::reprice(Queue& queue) {
 template <class Queue> size_t Simplifier::take_batch(Queue& queue) {
   if (batch_.size() < kBatch) batch_.resize(kBatch);
   size_t count = 0;
-  for (uint32_t v = queue.front(); v != kNone && count < kBatch; v = queue.after(v))
-    batch_[count++].v = v;
+  // From the lowest interval and the next few: as many as a batch holds, without jumping far
+  // ahead of the order (the intervals above are taken as nearly equal).
+  const uint32_t first = queue.front();
+  const int last = first == kNone ? 0 : queue.interval(first) + kBatchSpan;
+  for (uint32_t v = first; v != kNone && count < kBatch && queue.interval(v) <= last;
+       v = queue.after(v)) {
+    batch_[count].v = v;
+    batch_[count++].from = queue.interval(v);
+  }
   return count;
 }
 
@@ -602,17 +627,23 @@ template <class Queue> void Simplifier::run(Queue& queue) {
       if (p.stale) { // its price is today's only now: it goes only if it still leads
         factor_[v] = static_cast<float>(p.priority);
         if (by_factor && !(p.priority <= opt_.target.max_factor)) continue;
-        if (!queue.leads(p.priority)) {
+        if (!queue.leads(p.priority, p.from)) {
           queue.push(v, p.priority);
           continue;
         }
       }
       mark_taken(v, p.ring);
-      commit(v, p.ring, p.patch, queue);
+      account(v, p.ring, p.patch, queue);
+      committed_.push_back(uint32_t(b));
     }
     for (uint32_t u : taken_)
       flags_[u] &= ~kFlagTaken;
     taken_.clear();
+    workers_.for_each(committed_.size(), [&](size_t i) { rewrite(batch_[committed_[i]]); });
+    for (uint32_t b : committed_)
+      for (int i = 0; i < batch_[b].overflows; ++i)
+        topo_.add_face(batch_[b].overflow[i].first, batch_[b].overflow[i].second);
+    committed_.clear();
     reprice(queue);
   }
   if (opt_.progress && rep_.stop != StopReason::Cancelled) opt_.progress(1.0f);

@@ -41,6 +41,13 @@ class Topology {
   const uint32_t* faces_of(uint32_t v) const { return pool_.data() + first_[v]; }
 
   void add_face(uint32_t v, uint32_t face);
+  // add_face when v's slice has room (false: nothing done). Never moves memory, so threads may
+  // call it on distinct vertices at once.
+  bool add_face_in_place(uint32_t v, uint32_t face) {
+    if (count_[v] == capacity_[v]) return false;
+    pool_[first_[v] + count_[v]++] = face;
+    return true;
+  }
   void remove_face(uint32_t v, uint32_t face);
   void clear(uint32_t v) { count_[v] = 0; }
 
