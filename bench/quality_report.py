@@ -15,10 +15,11 @@ from collections import defaultdict
 BENCH_SIX = {"bunny00", "armadillo", "fandisk", "mushroom", "three_peaks", "elephant"}
 VARIANTS = [
     ("baseline", "the core before this change ({base})"),
-    ("ours", "new default: best of projection + fans, local error"),
+    ("ours", "new default: lazy re-pricing, batches, Morton order"),
     ("ours+boundary", "new default, boundary simplified on the open meshes, as QECD"),
     ("ours-factor", "paper's factor, same candidates"),
     ("ours-projection", "new core, paper's filling only"),
+    ("ours-eager", "new core, every neighbour re-priced at once (`--reprice eager`)"),
 ]
 OVER = 1.05  # more than 5 % over the target face count is off target
 

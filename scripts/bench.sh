@@ -8,7 +8,7 @@
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
 "$top/scripts/setup.sh"
-"$top/scripts/build.sh" -DVRS_BUILD_TESTS=OFF
+"$top/scripts/build.sh"
 data=$top/third_party/cgal-data/data/meshes
 large=0
 if [ "${1:-}" = --large ]; then large=1; shift; fi

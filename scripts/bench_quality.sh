@@ -4,14 +4,16 @@
 # packages) of at least 200 faces, at 50 %, 10 % and 1 %. Methods: the current default
 # ("ours"), the paper's factor with the same candidates ("ours-factor"), the paper's filling
 # only ("ours-projection"), the boundary simplified ("ours-boundary", for the open meshes'
-# targets), MeshLab's QECD with its defaults and with Preserve Topology, and the core of
-# BASELINE (default: 453defe, the last commit before candidate fillings; built once into
-# $VRS_CACHE). Writes bench/quality.csv and bench/QUALITY.md.
+# targets), every neighbour re-priced at once ("ours-eager", the paper's way, against the lazy
+# default), MeshLab's QECD with its defaults and with Preserve Topology, and the core of
+# BASELINE (default: 3df7c8d, the last commit before the speed work; built once into
+# $VRS_CACHE). One job per core (meshes shared out), one thread per run. Writes
+# bench/quality.csv and bench/QUALITY.md.
 #   scripts/bench_quality.sh [--samples S] [--baseline COMMIT] [--only NAME...]
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
 cache=${VRS_CACHE:-/var/cache/vrsimplify}
-samples=30000 baseline=453defe only=()
+samples=30000 baseline=3df7c8d only=()
 while [ $# -gt 0 ]; do
   case $1 in
   --samples) samples=$2; shift 2 ;;
@@ -45,27 +47,40 @@ while IFS= read -r f; do files+=("$f"); done < <(
 csv=$top/bench/quality.csv
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-echo "set,mesh,input_faces,open,ratio,target_faces,method,output_faces,output_vertices,seconds,error_max,error_mean,fold_area,note" >"$csv"
-for f in "${files[@]}"; do
+header="set,mesh,input_faces,open,ratio,target_faces,method,output_faces,output_vertices,seconds,error_max,error_mean,fold_area,note"
+one_mesh() { # file scratch-dir: its rows on stdout
+  local f=$1 scratch=$2 name set_name info faces open
   name=$(basename "$f"); name=${name%.*}
   case $f in /usr/share/assimp/*) set_name=assimp ;; *) set_name=cgal ;; esac
-  if [ ${#only[@]} -gt 0 ] && ! printf '%s\n' "${only[@]}" | grep -qx "$name"; then continue; fi
-  info=$("$bench" --info "$f" 2>/dev/null) || continue # unreadable, or not a triangle mesh
+  if [ ${#only[@]} -gt 0 ] && ! printf '%s\n' "${only[@]}" | grep -qx "$name"; then return; fi
+  info=$("$bench" --info "$f" 2>/dev/null) || return 0 # unreadable, or not a triangle mesh
   read -r faces open <<<"$info"
-  [ "$faces" -ge 200 ] || continue
+  [ "$faces" -ge 200 ] || return 0
   echo "== $set_name $name ($faces faces)" >&2
-  rm -f "$work"/*.ply
+  rm -f "$scratch"/*.ply
   {
     "$bench" "$f" --name "$name" --samples "$samples" \
-      --methods ours,ours-factor,ours-projection,ours-boundary,qecd,qecd-topology 2>/dev/null || true
+      --methods ours,ours-factor,ours-projection,ours-boundary,ours-eager,qecd,qecd-topology 2>/dev/null || true
     # The baseline's rows get their fold-over share from today's measure (same samples).
-    "$base" "$f" --name "$name" --samples "$samples" --methods ours --save "$work" 2>/dev/null |
+    "$base" "$f" --name "$name" --samples "$samples" --methods ours --save "$scratch" 2>/dev/null |
       while IFS=, read -r m fa r t _ of ov s pk ex emax emean erms note; do
-        folds=$("$bench" --compare "$f" "$work/${name}_${r}_ours.ply" --samples "$samples" | cut -d' ' -f4)
+        folds=$("$bench" --compare "$f" "$scratch/${name}_${r}_ours.ply" --samples "$samples" | cut -d' ' -f4)
         echo "$m,$fa,$r,$t,baseline,$of,$ov,$s,$pk,$ex,$emax,$emean,$erms,$folds,$note"
       done || true
   } | awk -F, -v s="$set_name" -v o="$open" 'NF >= 14 {
-        printf "%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s\n", s, $1, $2, o, $3, $4, $5, $6, $7, $8, $11, $12, $14, $15 }' >>"$csv"
+        printf "%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s,%s\n", s, $1, $2, o, $3, $4, $5, $6, $7, $8, $11, $12, $14, $15 }'
+}
+jobs=$(nproc)
+for j in $(seq 0 $((jobs - 1))); do
+  mkdir -p "$work/$j"
+  (
+    i=0
+    for f in "${files[@]}"; do
+      [ $((i++ % jobs)) -eq "$j" ] && one_mesh "$f" "$work/$j"
+    done >"$work/rows.$j"
+  ) &
 done
+wait
+{ echo "$header"; sort -t, -k1,2 -k5,5r -s "$work"/rows.*; } >"$csv"
 python3 "$top/bench/quality_report.py" "$csv" "$top/bench/QUALITY.md" "$baseline"
 echo "wrote $csv and bench/QUALITY.md" >&2

@@ -3,8 +3,9 @@
 # the real meshes, and the plugin in every host: MeshLab 2020.09's meshlabserver and GUI, the
 # real MeshLab 2022.02 and 2025.07 GUIs in Debian trixie and sid roots, pymeshlab), then the core, CLI
 # and sweep tests again built with AddressSanitizer + UndefinedBehaviorSanitizer in build/asan/
-# (MeshLab cannot load an instrumented plugin), then a bounded libFuzzer run (VRS_FUZZ_SECONDS,
-# default 120; scripts/fuzz.sh runs longer).
+# (MeshLab cannot load an instrumented plugin), the thread tests under ThreadSanitizer in
+# build/tsan/, then a bounded libFuzzer run (VRS_FUZZ_SECONDS, default 120; scripts/fuzz.sh
+# runs longer).
 #   scripts/test.sh [--no-sanitizers]
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
@@ -18,6 +19,11 @@ if [ "${1:-}" != "--no-sanitizers" ]; then
   cmake --build "$top/build/asan" -j "$(nproc)"
   (cd "$top/build/asan" && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
     ctest --output-on-failure -j "$(nproc)")
+  echo "== the worker threads under ThreadSanitizer"
+  cmake -S "$top" -B "$top/build/tsan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVRS_TSAN=ON \
+    -DVRS_BUILD_TESTS=ON -DVRS_BUILD_TOOLS=OFF -DVRS_BUILD_PLUGIN=OFF -DVRS_BUILD_BENCH=OFF >/dev/null
+  cmake --build "$top/build/tsan" --target test_threads -j "$(nproc)"
+  TSAN_OPTIONS=halt_on_error=1 "$top/build/tsan/bin/test_threads" --gtest_filter='Workers.*:Threads.*'
   echo "== libFuzzer on the core, ${VRS_FUZZ_SECONDS:-120} s"
   "$top/scripts/fuzz.sh" "${VRS_FUZZ_SECONDS:-120}"
 fi

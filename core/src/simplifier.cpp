@@ -26,7 +26,9 @@ constexpr uint8_t kFlagTaken = 64;  // in or next to a vertex removed in the cur
 // Removals planned together, read off the front of the queue. A constant, not the thread
 // count: the output must not depend on it.
 constexpr size_t kBatch = 128;
-constexpr int kBatchSpan = 16; // intervals above the lowest a batch may reach into
+// Intervals above the lowest a batch may reach into. 0: measured on the whole data set,
+// reaching 16 intervals up filled the batches but cost 2 % of mean and 8 % of max error.
+constexpr int kBatchSpan = 0;
 // Bits 2-4: the vertex's last plan's Reject (RejectCount: none), for Report::stop_detail.
 constexpr int kRefusedShift = 2;
 constexpr uint8_t kRefusedMask = 7 << kRefusedShift;
@@ -505,8 +507,7 @@ template <class Queue> void Simplifier::reprice(Queue& queue) {
 template <class Queue> size_t Simplifier::take_batch(Queue& queue) {
   if (batch_.size() < kBatch) batch_.resize(kBatch);
   size_t count = 0;
-  // From the lowest interval and the next few: as many as a batch holds, without jumping far
-  // ahead of the order (the intervals above are taken as nearly equal).
+  // From the lowest interval (and kBatchSpan above it): the order of the queue is kept.
   const uint32_t first = queue.front();
   const int last = first == kNone ? 0 : queue.interval(first) + kBatchSpan;
   for (uint32_t v = first; v != kNone && count < kBatch && queue.interval(v) <= last;
