@@ -53,20 +53,6 @@ int BucketQueue::lowest() const {
   return -1;
 }
 
-uint32_t BucketQueue::after(uint32_t v) const {
-  if (next_[v] != kNone) return next_[v];
-  // The next non-empty interval above v's: the rest of v's bitset word, then whole words.
-  const size_t i = where_[v] + 1;
-  size_t w = i >> 6;
-  if (w >= nonempty_.size()) return kNone;
-  uint64_t bits = (i & 63) ? nonempty_[w] & (~uint64_t(0) << (i & 63)) : nonempty_[w];
-  while (!bits) {
-    if (++w == nonempty_.size()) return kNone;
-    bits = nonempty_[w];
-  }
-  return head_[w * 64 + __builtin_ctzll(bits)];
-}
-
 uint32_t BucketQueue::front() const {
   int i = lowest();
   return i < 0 ? kNone : head_[i];

@@ -32,9 +32,8 @@ class BucketQueue {
 
   // First vertex of the lowest non-empty interval, or kNone. It stays queued until erased.
   uint32_t front() const;
-  // The vertex after v in queue order: next in its interval, else the head of the next
-  // non-empty one (kNone: v is the last). A batch is read off the front this way.
-  uint32_t after(uint32_t v) const;
+  // The vertex after v in its interval (kNone: v is its last): a batch is read off the front.
+  uint32_t after(uint32_t v) const { return next_[v]; }
   // Interval of a queued vertex.
   int interval(uint32_t v) const { return int(where_[v]); }
   // Whether a vertex of this factor, pushed now, would be in the lowest non-empty interval or

@@ -37,8 +37,10 @@ void Topology::grow(uint32_t v) {
 }
 
 void Topology::add_face(uint32_t v, uint32_t face) {
-  if (count_[v] == capacity_[v]) grow(v);
-  pool_[first_[v] + count_[v]++] = face;
+  if (!add_face_in_place(v, face)) {
+    grow(v);
+    add_face_in_place(v, face);
+  }
 }
 
 void Topology::remove_face(uint32_t v, uint32_t face) {
