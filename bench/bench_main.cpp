@@ -3,21 +3,29 @@
 //             [--samples S] [--header] [--save DIR]
 //   vrs_bench --compare A B [--samples S]   B against A: "max mean rms fold_area"
 //   vrs_bench --info MESH                      "faces open" (open: 1 when it has a border)
+//   vrs_bench --bound MESH E,.. [--samples S] [--name N]
+//             ours, meshoptimizer and vtkDecimatePro with an error limit E (fraction of the
+//             bounding-box diagonal) and no face target: faces reached, measured error, and
+//             our certified bound (rows: mesh,input_faces,bound,method,output_faces,seconds,
+//             error_max,error_mean,certified)
 //   vrs_bench --loop MESH LEVELS OUT.ply       Loop subdivision (large inputs)
 //   vrs_bench --terrain K OUT.ply              (2^K + 1)^2 fractal terrain
 // Methods: ours (defaults) with suffixes -factor / -local (priority), -linear / -log (mapping),
 // -heap (exact queue), -eager (every neighbour re-priced at once), -tN (N threads;
 // default 1 here, so that runs compare), -intN (N intervals), -projection (the paper's filling
 // only), -boundary (boundary simplified), combinable; qecd, qecd-topology (Preserve Topology on),
-// meshopt, vtk. Each run is a child process, so memory high-water marks do not carry over from one
-// run to the next.
+// qecd-keep (QECD with optimal placement off: a half-edge collapse, output vertices are input
+// vertices), openmesh (OpenMesh decimater + quadric module), meshopt, vtk. Each run is a child
+// process, so memory high-water marks do not carry over from one run to the next.
 #include <sys/wait.h>
 #include <unistd.h>
 
 #include <algorithm>
 #include <cctype>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <limits>
 #include <sstream>
 #include <string>
 #include <vector>
@@ -44,6 +52,10 @@ bool run_method(const std::string& method, const vrs::Mesh& in, size_t target,
     r = run_qecd(in, target);
   else if (method == "qecd-topology")
     r = run_qecd(in, target, /*preserve_topology=*/true);
+  else if (method == "qecd-keep")
+    r = run_qecd(in, target, /*preserve_topology=*/false, /*optimal_placement=*/false);
+  else if (method == "openmesh")
+    r = run_openmesh(in, target);
   else if (method == "meshopt")
     r = run_meshopt(in, target);
   else if (method == "vtk")
@@ -72,6 +84,8 @@ bool run_method(const std::string& method, const vrs::Mesh& in, size_t target,
         o.threads = std::atoi(p.c_str() + 1);
       else if (p == "eager")
         o.lazy_reevaluation = false;
+      else if (p == "bound") // track the certified error bound, no limit
+        o.max_error = std::numeric_limits<double>::infinity();
       else if (p == "heap")
         o.queue = vrs::QueueKind::Heap;
       else if (p.rfind("int", 0) == 0 && p.size() > 3)
@@ -135,6 +149,62 @@ int info(int argc, char** argv) {
   return 0;
 }
 
+double diagonal(const vrs::Mesh& m) {
+  double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  for (size_t i = 0; i + 2 < m.positions.size(); i += 3)
+    for (int c = 0; c < 3; ++c)
+      if (std::isfinite(m.positions[i + c]))
+        lo[c] = std::min(lo[c], double(m.positions[i + c])),
+        hi[c] = std::max(hi[c], double(m.positions[i + c]));
+  double d2 = 0;
+  for (int c = 0; c < 3; ++c)
+    d2 += hi[c] >= lo[c] ? (hi[c] - lo[c]) * (hi[c] - lo[c]) : 0.0;
+  return std::sqrt(d2);
+}
+
+int bound(int argc, char** argv) {
+  if (argc < 4) return 2;
+  const std::string path = argv[2];
+  std::vector<std::string> bounds = split(argv[3]);
+  size_t samples = 200000;
+  std::string name = path.substr(path.find_last_of('/') + 1);
+  name = name.substr(0, name.find('.'));
+  for (int i = 4; i + 1 < argc; i += 2) {
+    if (std::string(argv[i]) == "--samples") samples = std::strtoull(argv[i + 1], nullptr, 10);
+    if (std::string(argv[i]) == "--name") name = argv[i + 1];
+  }
+  vrs::Mesh in;
+  if (!load_core(path, in)) return 1;
+  const double diag = diagonal(in) > 0 ? diagonal(in) : 1.0;
+  int failures = 0;
+  for (const std::string& b : bounds) {
+    const double e = std::atof(b.c_str()) * diag;
+    for (const char* method : {"ours", "meshopt", "vtk"}) {
+      std::fflush(stdout);
+      pid_t pid = fork();
+      if (pid == 0) {
+        vrs::Options o;
+        o.threads = 1;
+        const std::string m = method;
+        vrs_bench::PeerResult r = m == "ours"      ? vrs_bench::run_ours_bound(in, e, o)
+                                  : m == "meshopt" ? vrs_bench::run_meshopt_bound(in, e)
+                                                   : vrs_bench::run_vtk_bound(in, e);
+        vrs_bench::SurfaceError s = vrs_bench::surface_error(in, r.mesh, samples);
+        std::printf("%s,%zu,%s,%s,%zu,%.6f,%.6g,%.6g,", name.c_str(), in.face_count(), b.c_str(),
+                    method, r.mesh.face_count(), r.seconds, s.max, s.mean);
+        if (m == "ours") std::printf("%.6g", r.error_bound / diag);
+        std::printf("\n");
+        std::fflush(stdout);
+        _exit(0);
+      }
+      int status = 0;
+      waitpid(pid, &status, 0);
+      failures += !WIFEXITED(status) || WEXITSTATUS(status) != 0;
+    }
+  }
+  return failures ? 1 : 0;
+}
+
 int make(int argc, char** argv) {
   vrs::Mesh m;
   std::string out;
@@ -168,6 +238,7 @@ int main(int argc, char** argv) {
   }
   if (std::string(argv[1]) == "--compare") return compare(argc, argv);
   if (std::string(argv[1]) == "--info") return info(argc, argv);
+  if (std::string(argv[1]) == "--bound") return bound(argc, argv);
   if (std::string(argv[1]) == "--loop" || std::string(argv[1]) == "--terrain")
     return make(argc, argv);
   std::string path = argv[1], name;
@@ -222,6 +293,9 @@ int main(int argc, char** argv) {
           vrs_bench::write_ply(r.mesh, save_dir + "/" + name + "_" + ratio + "_" + method + ".ply");
         vrs_bench::SurfaceError e = vrs_bench::surface_error(in, r.mesh, samples);
         double folds = vrs_bench::fold_over_share(in, r.mesh, samples);
+        if (r.error_bound > 0) // the certified bound, relative to the diagonal as the errors
+          r.note += (r.note.empty() ? "" : " ") + std::string("bound=") +
+                    std::to_string(r.error_bound / (e.diagonal > 0 ? e.diagonal : 1.0));
         std::printf("%s,%zu,%s,%zu,%s,%zu,%zu,%.6f,%.1f,%.1f,%.6g,%.6g,%.6g,%.6g,%s\n",
                     name.c_str(), in.face_count(), ratio.c_str(), target, method.c_str(),
                     r.mesh.face_count(), r.mesh.vertex_count(), r.seconds, r.peak_mb, r.extra_mb,

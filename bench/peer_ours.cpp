@@ -15,6 +15,7 @@ PeerResult run_ours(const vrs::Mesh& in, size_t target_faces, vrs::Options o) {
   vrs::Report rep = vrs::simplify(r.mesh, o);
   r.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   probe.finish(r);
+  r.error_bound = rep.error_bound;
   if (!rep.target_reached) {
     // The CSV's last column: the reason and what kept the rest, without commas.
     r.note = std::string(vrs::stop_reason_name(rep.stop)) + ": " + rep.stop_detail;
@@ -22,6 +23,11 @@ PeerResult run_ours(const vrs::Mesh& in, size_t target_faces, vrs::Options o) {
       if (c == ',') c = '/';
   }
   return r;
+}
+
+PeerResult run_ours_bound(const vrs::Mesh& in, double max_error, vrs::Options o) {
+  o.max_error = max_error;
+  return run_ours(in, 0, o);
 }
 
 } // namespace vrs_bench

@@ -40,7 +40,8 @@ class Collapse : public vcg::tri::TriEdgeCollapseQuadric<BenchMesh, VertexPair, 
 
 } // namespace
 
-PeerResult run_qecd(const vrs::Mesh& in, size_t target_faces, bool preserve_topology) {
+PeerResult run_qecd(const vrs::Mesh& in, size_t target_faces, bool preserve_topology,
+                    bool optimal_placement) {
   BenchMesh m;
   to_vcg(in, m);
   PeerResult r;
@@ -56,7 +57,7 @@ PeerResult run_qecd(const vrs::Mesh& in, size_t target_faces, bool preserve_topo
   pp.PreserveTopology = preserve_topology;
   pp.QualityWeight = false;
   pp.NormalCheck = false;
-  pp.OptimalPlacement = true;
+  pp.OptimalPlacement = optimal_placement;
   pp.QualityQuadric = false;
   pp.QualityQuadricWeight = 0.001;
 

@@ -24,7 +24,7 @@ want=(build-essential cmake pkg-config git xz-utils libgtest-dev libgmock-dev li
       meshlab qtbase5-dev libqt5opengl5-dev libqt5xmlpatterns5-dev libglew-dev
       xvfb xauth xdotool imagemagick
       # the benchmark's peers and plots
-      libmeshoptimizer-dev libvtk9-dev gnuplot-nox
+      libmeshoptimizer-dev libvtk9-dev libopenmesh-dev gnuplot-nox
       # robustness: the fuzzer (clang 14 + libFuzzer) and the sweep over assimp's test models
       clang-14 libfuzzer-14-dev libclang-rt-14-dev libassimp-dev assimp-testmodels time
       # the newer MeshLabs: their sources through a separate apt configuration, their GUIs in

@@ -24,6 +24,11 @@ const char* kUsage =
     "  --vertices N       stop at N vertices or fewer\n"
     "  --max-factor F     remove only vertices whose priority is <= F (mesh units)\n"
     "  --auto             stop when only the last interval of the hash table is left\n"
+    "  --max-error E[%]   guaranteed error: no point of the output farther than E from the\n"
+    "                     input and none of the input farther than E from the output\n"
+    "                     (mesh units, or % of the bounding-box diagonal); alone, or with\n"
+    "                     a count target (whichever comes first). The bound the run\n"
+    "                     certifies is printed\n"
     "options:\n"
     "  --mode surface|terrain|planar   3D average plane (default), 2.5D XY plane, 2D mesh plane\n"
     "  --intervals N                   hash-table intervals (default 1000)\n"
@@ -38,6 +43,8 @@ const char* kUsage =
     "  --threads N                     threads to plan removals on (default 0: all hardware\n"
     "                                  threads); the output is the same for every N\n"
     "  --simplify-boundary             also remove boundary vertices (default: kept)\n"
+    "  --error-bound                   track and print the certified error bound without\n"
+    "                                  limiting it (what --max-error does, minus the limit)\n"
     "  --feature-angle DEG             keep edges whose faces turn more than DEG apart as\n"
     "                                  polylines, as texture seams always are (default 0: off)\n"
     "  --progress / --quiet            progress on stderr: by default only when stderr is a\n"
@@ -65,7 +72,21 @@ bool parse_count(const char* s, size_t& out) {
   return *end == '\0';
 }
 
-void print_json(const vrs::Report& r, double seconds_simplify, double seconds_total) {
+// Diagonal of the finite positions' bounding box (0 when there is none).
+double diagonal(const vrs::Mesh& m) {
+  double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+  for (size_t i = 0; i + 2 < m.positions.size(); i += 3) {
+    const float* p = &m.positions[i];
+    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) continue;
+    for (int c = 0; c < 3; ++c)
+      lo[c] = std::min(lo[c], double(p[c])), hi[c] = std::max(hi[c], double(p[c]));
+  }
+  if (!(hi[0] >= lo[0])) return 0;
+  return std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
+                   (hi[2] - lo[2]) * (hi[2] - lo[2]));
+}
+
+void print_json(const vrs::Report& r, double seconds_simplify, double seconds_total, double diag) {
   std::printf("{\"ok\":%s,\"input_vertices\":%zu,\"input_faces\":%zu,\"output_vertices\":%zu,"
               "\"output_faces\":%zu,\"removed\":%zu,\"seconds_simplify\":%.6f,"
               "\"seconds_total\":%.6f,\"rejected\":{",
@@ -78,15 +99,18 @@ void print_json(const vrs::Report& r, double seconds_simplify, double seconds_to
               "\"locked\":%zu,\"high_valence\":%zu,\"constrained\":%zu},"
               "\"constrained_edges\":%zu,\"input_issues\":{\"degenerate_faces\":%zu,"
               "\"nonfinite_vertices\":%zu,\"unreferenced_vertices\":%zu},"
-              "\"relaxed_removals\":%zu,\"stop_detail\":\"%s\"}\n",
+              "\"relaxed_removals\":%zu,\"stop_detail\":\"%s\",\"error_bound\":%.9g,"
+              "\"error_bound_percent\":%.9g}\n",
               r.rejected_total(), vrs::stop_reason_name(r.stop),
               r.target_reached ? "true" : "false", r.max_removed_factor, r.kept_boundary,
               r.kept_nonmanifold, r.kept_locked, r.kept_high_valence, r.kept_constrained,
               r.constrained_edges, r.dropped_degenerate_faces, r.nonfinite_vertices,
-              r.unreferenced_vertices, r.relaxed_removals, r.stop_detail.c_str());
+              r.unreferenced_vertices, r.relaxed_removals, r.stop_detail.c_str(), r.error_bound,
+              diag > 0 ? 100.0 * r.error_bound / diag : 0.0);
 }
 
-void print_text(const vrs::Report& r, double seconds_simplify, double seconds_total) {
+void print_text(const vrs::Report& r, double seconds_simplify, double seconds_total, double diag,
+                bool bounded) {
   std::printf("input:   %zu vertices, %zu faces\n", r.input_vertices, r.input_faces);
   std::printf("output:  %zu vertices, %zu faces (%zu vertices removed)\n", r.vertices, r.faces,
               r.removed);
@@ -101,6 +125,10 @@ void print_text(const vrs::Report& r, double seconds_simplify, double seconds_to
   std::printf(")\nstopped: %s, target %s\n", vrs::stop_reason_name(r.stop),
               r.target_reached ? "reached" : "NOT reached");
   if (!r.stop_detail.empty()) std::printf("why:     %s\n", r.stop_detail.c_str());
+  if (bounded)
+    std::printf("bound:   %.6g (%.6g %% of the diagonal): no point of the output is farther "
+                "from the input, nor of the input from the output (certified)\n",
+                r.error_bound, diag > 0 ? 100.0 * r.error_bound / diag : 0.0);
   if (r.relaxed_removals)
     std::printf("relaxed: %zu removals after the input-normal veto was lifted to reach the "
                 "target\n",
@@ -119,6 +147,8 @@ int main(int argc, char** argv) {
   // The progress bar: on a terminal by default; --progress forces it (logs), --quiet drops it.
   int progress = -1;
   int targets = 0;
+  double max_error = 0; // mesh units, or percent of the diagonal
+  bool max_error_percent = false, error_bound = false;
   for (int i = 1; i < argc; ++i) {
     std::string a = argv[i];
     auto value = [&]() -> const char* {
@@ -139,6 +169,15 @@ int main(int argc, char** argv) {
       progress = 0;
     } else if (a == "--simplify-boundary") {
       opt.simplify_boundary = true;
+    } else if (a == "--error-bound") {
+      error_bound = true;
+    } else if (a == "--max-error") {
+      std::string e = (v = value()) ? v : "";
+      max_error_percent = !e.empty() && e.back() == '%';
+      if (max_error_percent) e.pop_back();
+      if (e.empty() || !parse_double(e.c_str(), max_error) || !(max_error > 0))
+        return usage_error("--max-error needs a distance > 0, in mesh units or with % (of the "
+                           "bounding-box diagonal)");
     } else if (a == "--auto") {
       opt.target.kind = vrs::TargetKind::Auto;
       ++targets;
@@ -206,6 +245,10 @@ int main(int argc, char** argv) {
   }
   if (in.empty() || out.empty()) return usage_error("INPUT and OUTPUT are required");
   if (targets > 1) return usage_error("give at most one target");
+  if (max_error > 0 && targets == 0) { // the bound alone: as far as it allows
+    opt.target.kind = vrs::TargetKind::Faces;
+    opt.target.faces = 0;
+  }
 
   vrs_tool::LoadResult loaded = vrs_tool::load(in);
   if (!loaded.doc) {
@@ -213,6 +256,9 @@ int main(int argc, char** argv) {
     return 3;
   }
   vrs::Mesh mesh = vrs_tool::to_core(*loaded.doc);
+  const double diag = diagonal(mesh);
+  opt.max_error = max_error_percent ? max_error / 100.0 * diag : max_error;
+  if (error_bound && !(opt.max_error > 0)) opt.max_error = HUGE_VAL;
   // Texture coordinates and normals stored per corner: their seams stay, new faces take the
   // data of the corners they replace.
   const std::vector<uint32_t> seams = vrs_tool::seams(*loaded.doc, mesh);
@@ -239,8 +285,8 @@ int main(int argc, char** argv) {
   }
   const double seconds_total = std::chrono::duration<double>(clock::now() - t0).count();
   if (json)
-    print_json(report, seconds_simplify, seconds_total);
+    print_json(report, seconds_simplify, seconds_total, diag);
   else
-    print_text(report, seconds_simplify, seconds_total);
+    print_text(report, seconds_simplify, seconds_total, diag, opt.max_error > 0);
   return 0;
 }

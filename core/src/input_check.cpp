@@ -36,6 +36,7 @@ std::string check_options(const Options& o, size_t vertex_count) {
            std::to_string(vertex_count) + " vertices";
   if (!(o.feature_angle_deg >= 0.0 && o.feature_angle_deg <= 180.0))
     return "feature angle must be in [0, 180] degrees, got " + std::to_string(o.feature_angle_deg);
+  if (!(o.max_error >= 0.0)) return "max error must be >= 0, got " + std::to_string(o.max_error);
   if (o.constrained_edges) {
     const auto& e = *o.constrained_edges;
     if (e.size() % 2) return "constrained edges must be vertex pairs (an even count)";

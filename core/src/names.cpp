@@ -11,6 +11,7 @@ const char* reject_name(Reject r) {
   case RejectFlip: return "flip";
   case RejectDegenerate: return "degenerate";
   case RejectFoldOver: return "fold_over";
+  case RejectBound: return "error_bound";
   default: return "unknown";
   }
 }
@@ -23,6 +24,7 @@ const char* stop_reason_name(StopReason r) {
   case StopReason::NoCandidates: return "no_candidates";
   case StopReason::Cancelled: return "cancelled";
   case StopReason::InvalidInput: return "invalid_input";
+  case StopReason::ErrorBound: return "error_bound";
   }
   return "unknown";
 }

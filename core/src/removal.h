@@ -58,6 +58,10 @@ class Planner {
   Reject plan_seam(uint32_t v, const Ring& ring, int i, int j, Vec3 normal, Patch& out,
                    double& cost, bool check_topology = true, bool price = true) const;
 
+  // Tracks the error bound (vetoes.h, veto_bound): each face slot's certified bound, kept by
+  // the driver. nullptr: not tracked.
+  void set_face_bounds(const float* face_bound) { face_bound_ = face_bound; }
+
  private:
   const Evaluator* eval_;
   const Topology* topo_;
@@ -66,6 +70,7 @@ class Planner {
   const RemovalLimits* limits_;
   Pricer price_;
   bool fans_, on_plane_;
+  const float* face_bound_ = nullptr;
 };
 
 } // namespace vrs

@@ -22,6 +22,8 @@ struct Patch {
   Vec3 normal, u, w;
   std::array<Vec3, kMaxRing + 1> q;
   std::array<Vec2, kMaxRing + 1> p;
+  // With an error bound tracked (error_bound.h): each new triangle's certified bound.
+  std::array<float, kMaxRing> bound;
 };
 
 bool is_convex(const Vec2* p, int k);

@@ -2,6 +2,8 @@
 
 #include <utility>
 
+#include "error_bound.h"
+
 namespace vrs {
 
 namespace {
@@ -89,6 +91,14 @@ Reject veto_shape(const Ring& ring, const Patch& patch, const FaceNormals& old_n
         if (before >= 0 && folds_on(face, before)) return RejectFoldOver;
       }
   }
+  return RejectCount;
+}
+
+Reject veto_bound(const Ring& ring, Patch& patch, Vec3 c, OpenRing open, const float* face_bound,
+                  const RemovalLimits& limits) {
+  if (!bound_patch(ring, patch, c, open, face_bound)) return RejectBound;
+  for (int t = 0; t < patch.count; ++t)
+    if (!(patch.bound[t] <= limits.max_error)) return RejectBound;
   return RejectCount;
 }
 

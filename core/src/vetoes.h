@@ -2,6 +2,8 @@
 // next candidate when one is refused.
 #pragma once
 
+#include <limits>
+
 #include "evaluation.h"
 #include "removal_types.h"
 #include "topology.h"
@@ -23,6 +25,8 @@ struct RemovalLimits {
   // the driver's last resort, when nothing else is left to remove and the target is not met,
   // asks it of one corner only (the fold-over veto stays).
   bool input_normals = true;
+  // With an error bound tracked (Options::max_error): no new face's certified bound above it.
+  double max_error = std::numeric_limits<double>::infinity();
 };
 
 // Manifold topology: no new triangle that already exists, no new edge that already exists
@@ -41,5 +45,11 @@ void replaced_face_normals(uint32_t v, const Ring& ring, const Patch& patch, con
                            FaceNormals& out);
 Reject veto_shape(const Ring& ring, const Patch& patch, const FaceNormals& replaced,
                   const float* surface_normals, const RemovalLimits& limits, bool plane_angle);
+
+// Error bound (error_bound.h): the patch must project one-to-one with the fan it replaces, and
+// every new face's certified bound (written into patch.bound) must stay within
+// limits.max_error. `face_bound`: each face slot's bound; `c`: the removed vertex's position.
+Reject veto_bound(const Ring& ring, Patch& patch, Vec3 c, OpenRing open, const float* face_bound,
+                  const RemovalLimits& limits);
 
 } // namespace vrs

@@ -380,10 +380,18 @@ std::string check_run(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Opti
     if (!o.progress) return "cancelled without a progress callback";
     break;
   case vrs::StopReason::InvalidInput: return "ok report with stop invalid_input";
+  case vrs::StopReason::ErrorBound:
+    if (!(o.max_error > 0 && std::isfinite(o.max_error)))
+      return "error_bound stop without a finite max_error";
+    break;
   }
-  const bool reached = r.stop == vrs::StopReason::TargetReached ||
-                       r.stop == vrs::StopReason::MaxFactor ||
-                       r.stop == vrs::StopReason::LastInterval;
+  if (o.max_error > 0 && !(r.error_bound <= o.max_error))
+    return "certified bound " + std::to_string(r.error_bound) + " above max_error " +
+           std::to_string(o.max_error);
+  if (!(o.max_error > 0) && r.error_bound != 0) return "an error bound without max_error";
+  const bool reached =
+      r.stop == vrs::StopReason::TargetReached || r.stop == vrs::StopReason::MaxFactor ||
+      r.stop == vrs::StopReason::LastInterval || r.stop == vrs::StopReason::ErrorBound;
   if (r.target_reached != reached) return "target_reached disagrees with the stop reason";
   return {};
 }

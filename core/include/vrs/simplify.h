@@ -120,6 +120,15 @@ struct Options {
   // Threads to plan removals on (0: the machine's hardware threads). The output is the same
   // whatever the number: independent removals are planned together, committed in queue order.
   int threads = 0;
+  // A guaranteed error: no point of the output farther than this from the input surface, and
+  // no point of the input farther than this from the output (symmetric Hausdorff distance),
+  // in mesh units. 0 = off. With a count target too, whichever comes first stops the run.
+  // Each face then carries a certified bound of its distance to the input it stands for
+  // (Klein, Liebich & Strasser 1996), so removals whose patch would exceed it, or cannot be
+  // certified, are refused (RejectBound); the run reports the bound it certifies in
+  // Report::error_bound. +inf tracks and reports the bound without limiting anything. The
+  // tracking costs a float a face and a polygon overlay per plan; it runs only when asked.
+  double max_error = 0.0;
   // Fill Report::corner_source, so that per-corner data (texture coordinates, normals, colors
   // stored per face corner) can follow the simplification. Costs 12 bytes a face.
   bool corner_sources = false;
@@ -135,6 +144,8 @@ enum Reject : uint8_t {
                     // faces away from the input surface at its corners
   RejectDegenerate, // a new triangle would be a sliver or have no area
   RejectFoldOver,   // a new triangle would face against a face it replaces (a fold-over)
+  RejectBound,      // with Options::max_error: the patch would break the error bound, or cannot
+                    // be certified (it does not project one-to-one with the faces it replaces)
   RejectCount
 };
 const char* reject_name(Reject r);
@@ -146,6 +157,8 @@ enum class StopReason : uint8_t {
   NoCandidates,  // every remaining vertex is kept or was refused: the target cannot be reached
   Cancelled,     // the progress callback returned false
   InvalidInput,  // nothing was done, see Report::message
+  ErrorBound,    // with Options::max_error: no removal left that keeps the bound (a target
+                 // like the others: whichever of it and a count target comes first)
 };
 const char* stop_reason_name(StopReason r);
 
@@ -180,7 +193,10 @@ struct Report {
   std::string stop_detail;
 
   double max_removed_factor = 0.0; // largest priority (factor or local error) of a removed vertex
-  std::vector<uint32_t> remap;     // old vertex index -> new index, or kRemoved
+  // With Options::max_error: the certified bound of the symmetric Hausdorff distance between
+  // the output and the input (mesh units; 0 when nothing was removed). Else 0.
+  double error_bound = 0.0;
+  std::vector<uint32_t> remap; // old vertex index -> new index, or kRemoved
   // For each output face, the input face it is (same corners, same order), or kRemoved for a
   // face the re-triangulation made: lets an adapter keep per-face data of untouched faces.
   std::vector<uint32_t> face_source;
