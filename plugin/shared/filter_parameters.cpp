@@ -58,6 +58,14 @@ void declare_parameters(const MeshModel& m, RichParameterList& par) {
                            "apart are kept as polylines, as texture seams always are: a vertex "
                            "on such a crease goes only along it (vtkDecimatePro's feature "
                            "angle). 0 = off."));
+  if (!kScriptsListEveryParameter)
+    par.addParam(RichFloat("MaxError", 0, "Max error (% of the diagonal)",
+                           "If non zero, a guaranteed error: no point of the result farther "
+                           "than this from the input surface, and no point of the input "
+                           "farther than this from the result (symmetric Hausdorff distance, "
+                           "in percent of the bounding-box diagonal). With a face or vertex "
+                           "target too, whichever comes first stops. The log and the result "
+                           "give the bound the run certifies. 0 = off."));
 }
 
 QString read_parameters(const RichParameterList& par, const CMeshO& m, FilterSettings& s) {
@@ -74,6 +82,7 @@ QString read_parameters(const RichParameterList& par, const CMeshO& m, FilterSet
   s.auto_clean = par.getBool("AutoClean");
   s.lod_levels = par.getInt("LODLevels");
   s.feature_angle = par.hasParameter("FeatureAngle") ? par.getFloat("FeatureAngle") : 0.0;
+  s.max_error = par.hasParameter("MaxError") ? par.getFloat("MaxError") : 0.0;
   s.input_faces = m.fn;
   s.input_vertices = m.vn;
 
@@ -95,6 +104,8 @@ QString read_parameters(const RichParameterList& par, const CMeshO& m, FilterSet
     return QString("Levels of detail must be in [1, 16], got %1.").arg(s.lod_levels);
   if (!(s.feature_angle >= 0 && s.feature_angle <= 180))
     return QString("Crease angle must be in [0, 180] degrees, got %1.").arg(s.feature_angle);
+  if (!(s.max_error >= 0 && s.max_error <= 100))
+    return QString("Max error must be in [0, 100] % of the diagonal, got %1.").arg(s.max_error);
   if (s.selected && m.sfn == 0)
     return "Simplify only selected faces is on, but no face is selected.";
 

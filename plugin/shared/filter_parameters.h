@@ -25,6 +25,7 @@ struct FilterSettings {
   bool auto_clean = true;
   int lod_levels = 1;
   double feature_angle = 0; // degrees, 0 = off (2022+ hosts only, see meshlab_compat.h)
+  double max_error = 0;     // % of the bounding-box diagonal, 0 = off (2022+ hosts only)
   // Size of the input layer, to carry "the same reduction" to the next LOD levels.
   int input_faces = 0, input_vertices = 0;
 

@@ -28,13 +28,12 @@ QString python_filter_name() {
 QString filter_info() {
   return "Simplify a triangle mesh by removing vertices: the kept vertices are a subset of the "
          "input, untouched, so colors, normals, quality and texture coordinates survive exactly. "
-         "Each vertex gets an <i>evaluation factor</i> (its mean distance to its neighbours along "
-         "the normal of their average plane; the XY plane for 2.5D terrains), vertices go into a "
-         "hash table of intervals, the first vertex of the lowest interval is removed and its "
-         "hole is projected on the plane and re-triangulated (fan if convex, ear clipping "
-         "otherwise), then its neighbours are re-evaluated. Linear time. Boundary vertices are "
-         "kept by default; removals that would fold, flip or make the mesh non-manifold are "
-         "refused."
+         "Each removal is planned first (the hole filled by the paper's projection or by a fan "
+         "from a neighbour) and priced by the <i>local error</i> of that patch (or by the "
+         "paper's <i>evaluation factor</i>); vertices go into the paper's hash table of "
+         "intervals by that price and the lowest go first. Boundary vertices are kept by "
+         "default; removals that would fold over, flip or break manifoldness are refused. Max "
+         "error (MeshLab 2022.02 and later) guarantees the Hausdorff distance to the input."
          "<br><br>See:<br>"
          "<i>Bo&scaron;tjan Pivec, Vid Domiter</i><br>"
          "<b>\"A General Simplification Algorithm\"</b><br>"
@@ -60,6 +59,7 @@ struct Totals {
   size_t kept_boundary = 0, kept_nonmanifold = 0, kept_locked = 0, kept_high_valence = 0;
   size_t kept_constrained = 0, constrained_edges = 0;
   double max_priority = 0, seconds = 0;
+  double error_bound = 0, diagonal = 0; // summed over the levels: each is bounded from the last
   bool target_reached = true;
   vrs::StopReason stop = vrs::StopReason::TargetReached; // of the last level
 };
@@ -155,6 +155,11 @@ Outcome Application::run(const RichParameterList& par) {
   r["kept_constrained"] = count(totals_.kept_constrained);
   r["constrained_edges"] = count(totals_.constrained_edges);
   r["max_priority"] = totals_.max_priority;
+  // With MaxError: the certified bound of the last level against the input (mesh units, and
+  // in % of the input's diagonal).
+  r["error_bound"] = totals_.error_bound;
+  r["error_bound_percent"] =
+      totals_.diagonal > 0 ? 100.0 * totals_.error_bound / totals_.diagonal : 0.0;
   r["seconds"] = totals_.seconds;
   out.ok = true;
   return out;
@@ -177,6 +182,10 @@ QString Application::simplify_layer(MeshModel& m, const FilterSettings& s, int l
     o.locked = &lock;
   }
   o.progress = progress;
+  vcg::tri::UpdateBounding<CMeshO>::Box(m.cm);
+  if (level == 1) totals_.diagonal = m.cm.bbox.Diag();
+  // The same distance at every level: the levels' bounds add up (log and result).
+  if (s.max_error > 0) o.max_error = s.max_error / 100.0 * totals_.diagonal;
   vrs::Mesh mesh = copy.mesh;
   const auto t0 = std::chrono::steady_clock::now();
   vrs::Report r = vrs::simplify(mesh, o);
@@ -209,6 +218,7 @@ QString Application::simplify_layer(MeshModel& m, const FilterSettings& s, int l
   totals_.kept_constrained += r.kept_constrained;
   totals_.constrained_edges = std::max(totals_.constrained_edges, r.constrained_edges);
   totals_.max_priority = std::max(totals_.max_priority, r.max_removed_factor);
+  totals_.error_bound += r.error_bound;
   totals_.seconds += seconds;
   totals_.target_reached = totals_.target_reached && r.target_reached;
   totals_.stop = r.stop;
@@ -246,6 +256,12 @@ QString Application::simplify_layer(MeshModel& m, const FilterSettings& s, int l
              .arg(r.stop_detail.empty() ? QString("stopped before the target")
                                         : QString::fromStdString(r.stop_detail)));
   }
+  if (o.max_error > 0)
+    log(QString("Certified error bound: %1 (%2 % of the diagonal): no point of the result is "
+                "farther from the input, nor of the input from the result%3")
+            .arg(totals_.error_bound)
+            .arg(totals_.diagonal > 0 ? 100.0 * totals_.error_bound / totals_.diagonal : 0.0)
+            .arg(level > 1 ? " (the levels' bounds added up)" : ""));
   if (r.relaxed_removals)
     log(QString("%1 removals needed the input-normal veto lifted to reach the target")
             .arg(r.relaxed_removals));

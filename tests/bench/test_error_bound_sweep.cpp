@@ -57,17 +57,15 @@ bool load(const std::string& path, vrs::Mesh& out) {
 TEST(ErrorBoundSweep, MeasuredHausdorffNeverExceedsTheCertifiedBound) {
   const std::vector<std::string> files = data_set();
   if (files.empty()) GTEST_SKIP() << "no data set";
-  size_t meshes = 0, runs = 0;
-  double tightest = 0; // largest measured / certified
+  size_t meshes = 0, runs = 0, in_slack = 0;
+  double tightest = 0; // largest measured / certified, where the bound is above rounding
   for (const std::string& f : files) {
     vrs::Mesh in;
     if (!load(f, in) || in.face_count() < 200) continue;
     ++meshes;
     const double diag = vrs_bench::surface_error(in, in, 10).diagonal;
     if (!(diag > 0)) continue;
-    struct Case {
-      double fraction; // max_error, of the diagonal; inf: tracked only, at 10 % of the faces
-    };
+    // max_error of the diagonal; inf: tracked only, at 10 % of the faces.
     for (double fraction : {0.01, 0.001, std::numeric_limits<double>::infinity()}) {
       vrs::Options o;
       o.threads = 1;
@@ -82,11 +80,13 @@ TEST(ErrorBoundSweep, MeasuredHausdorffNeverExceedsTheCertifiedBound) {
       const double bound = r.error_bound / diag;
       EXPECT_LE(e.max, bound + 1e-6) << f << " at " << fraction << ": measured " << e.max
                                      << " of the diagonal, certified " << bound;
-      if (bound > 0) tightest = std::max(tightest, e.max / bound);
+      if (bound > 1e-5) tightest = std::max(tightest, e.max / bound);
+      in_slack += e.max > bound;
       ++runs;
     }
   }
-  std::printf("error bound sweep: %zu meshes, %zu runs, largest measured / certified %.3f\n",
-              meshes, runs, tightest);
+  std::printf("error bound sweep: %zu meshes, %zu runs, largest measured / certified %.3f "
+              "(bounds above 1e-5 of the diagonal), %zu runs within the slack only\n",
+              meshes, runs, tightest, in_slack);
   EXPECT_GT(meshes, 50u);
 }

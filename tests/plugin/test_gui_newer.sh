@@ -11,8 +11,8 @@ set -u
 version=$1 root=$(realpath "$2") build=$(realpath "$3") mesh=$(realpath "$4") out=$(realpath -m "$5")
 here=$(cd "$(dirname "$0")" && pwd)
 case "$version" in #      filter entry      Apply        Levels of detail field
-  2022.02) component=meshlab2022 entry="637 677" apply="685 706" levels="653 554" ;;
-  2025.07) component=meshlab2025 entry="637 620" apply="685 765" levels="653 524" ;;
+  2022.02) component=meshlab2022 entry="637 677" apply="685 713" levels="653 546" ;;
+  2025.07) component=meshlab2025 entry="637 620" apply="685 773" levels="653 517" ;;
   *) echo "usage: test_gui_newer.sh 2022.02|2025.07 ROOT BUILD_DIR MESH OUT_DIR"; exit 2 ;;
 esac
 plugin="$root/usr/lib/x86_64-linux-gnu/meshlab/plugins/libfilter_vertex_removal.so"

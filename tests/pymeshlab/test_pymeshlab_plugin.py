@@ -31,7 +31,7 @@ def test_filter_is_listed_with_lowercased_parameters(plugin, meshes):
     values = ms.filter_parameter_values(FILTER)
     assert set(values) == {"targetfacenum", "targetperc", "targetvertnum", "maxfactor",
                            "autostop", "mode", "priority", "intervals", "preserveboundary",
-                           "selected", "autoclean", "lodlevels", "featureangle"}
+                           "selected", "autoclean", "lodlevels", "featureangle", "maxerror"}
     assert values["targetfacenum"] == ms.current_mesh().face_number() // 2
 
 
@@ -255,3 +255,24 @@ def test_feature_angle_is_a_parameter_and_keeps_creases(plugin, meshes):
     FAILED_MESHSETS.append(ms)
     with pytest.raises(pymeshlab.PyMeshLabException):
         ms.apply_filter(FILTER, featureangle=200.0)
+
+
+def test_max_error_is_a_parameter_and_certifies_the_hausdorff_distance(plugin, meshes):
+    ms = load(meshes / "fandisk.off")
+    assert ms.filter_parameter_values(FILTER)["maxerror"] == 0
+    faces = ms.current_mesh().face_number()
+    r = ms.apply_filter(FILTER, targetfacenum=0, maxerror=0.2)
+    assert r["stop_reason"] == 6  # error_bound: no removal left within the bound
+    assert r["target_reached"]
+    assert 0 < r["error_bound_percent"] <= 0.2
+    assert ms.current_mesh().face_number() < faces // 4
+    # MeshLab's own Hausdorff distance (sampled, both ways) stays within the certified bound.
+    ms.load_new_mesh(str(meshes / "fandisk.off"))
+    diag = ms.current_mesh().bounding_box().diagonal()
+    ab = ms.get_hausdorff_distance(sampledmesh=0, targetmesh=1, samplenum=20000)
+    ba = ms.get_hausdorff_distance(sampledmesh=1, targetmesh=0, samplenum=20000)
+    assert max(ab["max"], ba["max"]) <= r["error_bound"] + 1e-6 * diag
+    FAILED_MESHSETS.append(ms)
+    with pytest.raises(pymeshlab.PyMeshLabException, match="Max error"):
+        ms.apply_filter(FILTER, maxerror=-1.0)
+
