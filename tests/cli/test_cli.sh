@@ -121,6 +121,26 @@ expect_exit 2 "--reprice must be" "$bin" "$in" "$out/never.ply" --reprice someti
 expect_exit 2 "--threads needs" "$bin" "$in" "$out/never.ply" --threads -2
 expect_exit 1 "intervals" "$bin" "$in" "$out/never.ply" --intervals 1
 expect_exit 2 "required" "$bin" "$in"
+expect_exit 2 "--max-error needs" "$bin" "$in" "$out/never.ply" --max-error -1
+expect_exit 2 "--max-error needs" "$bin" "$in" "$out/never.ply" --max-error %
+
+# --max-error: alone it simplifies as far as the bound allows and prints the bound it certifies
+# (within the limit); in % of the diagonal (fandisk's is 1.452); with a face target, whichever
+# comes first. ("error_bound" is also a refusal's name: the report's field is the last one.)
+"$bin" "$in" "$out/bound.ply" --max-error 0.1% --json >"$out/bound.json" 2>"$out/e" &&
+  grep -q '"stop_reason":"error_bound"' "$out/bound.json" &&
+  awk -v b="$(json_num "$out/bound.json" error_bound_percent)" 'BEGIN { exit !(b > 0 && b <= 0.1) }' &&
+  [ "$(json_num "$out/bound.json" output_faces)" -lt 3000 ] && ok ||
+  fail "--max-error 0.1%: $(cat "$out/bound.json" "$out/e")"
+"$bin" "$in" "$out/bound-abs.ply" --max-error 0.0014519 --json >"$out/bound-abs.json" &&
+  awk -v b="$(grep -oE '"error_bound":[0-9.eE+-]+' "$out/bound-abs.json" | tail -n 1 | cut -d: -f2)" 'BEGIN { exit !(b > 0 && b <= 0.0014519) }' && ok ||
+  fail "--max-error in mesh units: $(cat "$out/bound-abs.json")"
+"$bin" "$in" "$out/bound-faces.ply" --max-error 1% --faces 5000 --json >"$out/bound-faces.json" &&
+  grep -q '"stop_reason":"target_reached"' "$out/bound-faces.json" &&
+  [ "$(json_num "$out/bound-faces.json" output_faces)" -le 5000 ] && ok ||
+  fail "--max-error with --faces: $(cat "$out/bound-faces.json")"
+"$bin" "$in" "$out/bound-text.ply" --ratio 0.1 --error-bound | grep -q "^bound: .*certified" && ok ||
+  fail "--error-bound prints no bound"
 expect_exit 3 "cannot write" "$bin" "$in" "$out/no/such/dir/x.ply"
 printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n' >"$out/bad-index.off"
 "$bin" "$out/bad-index.off" "$out/never.ply" >"$out/o" 2>"$out/e"; code=$?
