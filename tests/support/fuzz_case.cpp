@@ -1,6 +1,9 @@
 #include "fuzz_case.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
+#include <limits>
 
 #include "mesh_checks.h"
 
@@ -89,6 +92,18 @@ FuzzCase decode_fuzz_case(const uint8_t* data, size_t size) {
     }
   }
   if (creases) o.feature_angle_deg = unchecked ? double(raw_param) : double(param % 180);
+  // The cancel byte's high nibble: bit 3 asks for an error bound, bits 0-2 its size (a 500th of
+  // the extent, doubled each step; 7: tracked only).
+  if (cancel_after & 0x80) {
+    const int step = (cancel_after >> 4) & 7;
+    double extent = 0;
+    for (float x : c.mesh.positions)
+      if (std::isfinite(x)) extent = std::max(extent, double(std::fabs(x)));
+    o.max_error = unchecked    ? double(raw_param)
+                  : step == 7  ? std::numeric_limits<double>::infinity()
+                  : extent > 0 ? extent * 0.002 * double(1 << step)
+                               : 1.0;
+  }
   if (locks) {
     c.locks.assign(n, 0);
     for (size_t v = 0; v < n; v += 1 + lock_stride % 7)
