@@ -4,6 +4,8 @@
 #include <cmath>
 #include <limits>
 
+#include "local_error.h"
+
 namespace vrs {
 
 namespace {
@@ -52,13 +54,6 @@ Vec3 lift(Vec2 x, Vec2 a, Vec2 b, Vec2 c, Vec3 qa, Vec3 qb, Vec3 qc) {
   const double area = orient2d(a, b, c);
   const double la = orient2d(x, b, c) / area, lb = orient2d(a, x, c) / area;
   return qa * la + qb * lb + qc * (1.0 - la - lb);
-}
-
-double distance_to_segment(Vec3 p, Vec3 a, Vec3 b) {
-  const Vec3 ab = b - a;
-  const double len2 = dot(ab, ab);
-  const double t = len2 > 0 ? std::min(1.0, std::max(0.0, dot(p - a, ab) / len2)) : 0.0;
-  return length(p - (a + ab * t));
 }
 
 // Rounded up, so that the stored bound stays a bound.

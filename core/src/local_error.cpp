@@ -37,16 +37,12 @@ double point_triangle_distance(Vec3 p, Vec3 a, Vec3 b, Vec3 c) {
   return std::sqrt(point_triangle_distance2(p, a, b, c));
 }
 
-namespace {
-
 double distance_to_segment(Vec3 p, Vec3 a, Vec3 b) {
   Vec3 ab = b - a;
   double len2 = dot(ab, ab), t = len2 > 0 ? dot(p - a, ab) / len2 : 0.0;
   t = std::min(1.0, std::max(0.0, t));
   return length(p - (a + ab * t));
 }
-
-} // namespace
 
 double patch_error(uint32_t v, const Ring& ring, const Patch& patch, const Evaluator& eval,
                    double reference_area) {

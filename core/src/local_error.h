@@ -14,6 +14,8 @@ namespace vrs {
 // Distance from p to the triangle (a, b, c), exact (closest point on the triangle).
 double point_triangle_distance(Vec3 p, Vec3 a, Vec3 b, Vec3 c);
 double point_triangle_distance2(Vec3 p, Vec3 a, Vec3 b, Vec3 c); // squared
+// Distance from p to the segment (a, b).
+double distance_to_segment(Vec3 p, Vec3 a, Vec3 b);
 
 // Largest of: the removed vertex's distance to the new patch, and the distance of each new
 // triangle's centroid and each new diagonal's midpoint to the old fan (zero for a flat ring),
