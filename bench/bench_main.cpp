@@ -149,19 +149,6 @@ int info(int argc, char** argv) {
   return 0;
 }
 
-double diagonal(const vrs::Mesh& m) {
-  double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
-  for (size_t i = 0; i + 2 < m.positions.size(); i += 3)
-    for (int c = 0; c < 3; ++c)
-      if (std::isfinite(m.positions[i + c]))
-        lo[c] = std::min(lo[c], double(m.positions[i + c])),
-        hi[c] = std::max(hi[c], double(m.positions[i + c]));
-  double d2 = 0;
-  for (int c = 0; c < 3; ++c)
-    d2 += hi[c] >= lo[c] ? (hi[c] - lo[c]) * (hi[c] - lo[c]) : 0.0;
-  return std::sqrt(d2);
-}
-
 int bound(int argc, char** argv) {
   if (argc < 4) return 2;
   const std::string path = argv[2];
@@ -175,7 +162,7 @@ int bound(int argc, char** argv) {
   }
   vrs::Mesh in;
   if (!load_core(path, in)) return 1;
-  const double diag = diagonal(in) > 0 ? diagonal(in) : 1.0;
+  const double diag = vrs::bounding_box_diagonal(in) > 0 ? vrs::bounding_box_diagonal(in) : 1.0;
   int failures = 0;
   for (const std::string& b : bounds) {
     const double e = std::atof(b.c_str()) * diag;

@@ -72,20 +72,6 @@ bool parse_count(const char* s, size_t& out) {
   return *end == '\0';
 }
 
-// Diagonal of the finite positions' bounding box (0 when there is none).
-double diagonal(const vrs::Mesh& m) {
-  double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
-  for (size_t i = 0; i + 2 < m.positions.size(); i += 3) {
-    const float* p = &m.positions[i];
-    if (!std::isfinite(p[0]) || !std::isfinite(p[1]) || !std::isfinite(p[2])) continue;
-    for (int c = 0; c < 3; ++c)
-      lo[c] = std::min(lo[c], double(p[c])), hi[c] = std::max(hi[c], double(p[c]));
-  }
-  if (!(hi[0] >= lo[0])) return 0;
-  return std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
-                   (hi[2] - lo[2]) * (hi[2] - lo[2]));
-}
-
 void print_json(const vrs::Report& r, double seconds_simplify, double seconds_total, double diag) {
   std::printf("{\"ok\":%s,\"input_vertices\":%zu,\"input_faces\":%zu,\"output_vertices\":%zu,"
               "\"output_faces\":%zu,\"removed\":%zu,\"seconds_simplify\":%.6f,"
@@ -256,7 +242,7 @@ int main(int argc, char** argv) {
     return 3;
   }
   vrs::Mesh mesh = vrs_tool::to_core(*loaded.doc);
-  const double diag = diagonal(mesh);
+  const double diag = vrs::bounding_box_diagonal(mesh);
   opt.max_error = max_error_percent ? max_error / 100.0 * diag : max_error;
   if (error_bound && !(opt.max_error > 0)) opt.max_error = HUGE_VAL;
   // Texture coordinates and normals stored per corner: their seams stay, new faces take the

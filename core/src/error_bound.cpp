@@ -90,9 +90,8 @@ bool projects_one_to_one(const Ring& ring, const Patch& patch) {
 
 } // namespace
 
-bool bound_patch(const Ring& ring, Patch& patch, Vec3 c, OpenRing open, const float* face_bound) {
-  if (patch.count == 0 || open != OpenRing::Border || !projects_one_to_one(ring, patch))
-    return false;
+bool bound_patch(const Ring& ring, Patch& patch, Vec3 c, const float* face_bound) {
+  if (patch.count == 0 || !projects_one_to_one(ring, patch)) return false;
   const int k = ring.verts;
   const auto& p = patch.p;
   const auto& q = patch.q;

@@ -14,7 +14,6 @@
 // new border edge, which the triangle on that edge answers for.
 #pragma once
 
-#include "removal_types.h"
 #include "topology.h"
 #include "triangulation.h"
 
@@ -22,8 +21,9 @@ namespace vrs {
 
 // Writes each new triangle's bound into patch.bound (rounded up to float) and returns true;
 // false when the patch cannot be certified (the fan or the patch do not project one-to-one on
-// the plan's plane, a seam side, a triangle cut off). `face_bound` holds e_f per face slot;
-// `c` is the removed vertex's position.
-bool bound_patch(const Ring& ring, Patch& patch, Vec3 c, OpenRing open, const float* face_bound);
+// the plan's plane, a triangle cut off). An open ring is a border's (a seam's sides are bounded
+// together, as one ring). `face_bound` holds e_f per face slot; `c` is the removed vertex's
+// position.
+bool bound_patch(const Ring& ring, Patch& patch, Vec3 c, const float* face_bound);
 
 } // namespace vrs

@@ -100,7 +100,7 @@ Reject Planner::plan(uint32_t v, const Ring& ring, Vec3 n, Patch& out, double& c
       why = veto_shape(ring, out, replaced, normals_, *limits_, c == 0 || on_plane_);
     // A seam's sides are bounded together, by plan_seam.
     if (why == RejectCount && face_bound_ && open == OpenRing::Border)
-      why = veto_bound(ring, out, eval_->position(v), open, face_bound_, *limits_);
+      why = veto_bound(ring, out, eval_->position(v), face_bound_, *limits_);
     if (why == RejectCount) {
       cost = price ? price_.exact(v, ring, out) : 0.0;
       return RejectCount;
@@ -144,8 +144,7 @@ Reject Planner::plan_seam(uint32_t v, const Ring& ring, int i, int j, Vec3 n, Pa
   out.count = count;
   project(v, ring, n, *eval_, out);
   if (face_bound_ && !ring.closed()) return RejectBound;
-  if (face_bound_)
-    return veto_bound(ring, out, eval_->position(v), OpenRing::Border, face_bound_, *limits_);
+  if (face_bound_) return veto_bound(ring, out, eval_->position(v), face_bound_, *limits_);
   return RejectCount;
 }
 

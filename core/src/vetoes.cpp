@@ -94,9 +94,9 @@ Reject veto_shape(const Ring& ring, const Patch& patch, const FaceNormals& old_n
   return RejectCount;
 }
 
-Reject veto_bound(const Ring& ring, Patch& patch, Vec3 c, OpenRing open, const float* face_bound,
+Reject veto_bound(const Ring& ring, Patch& patch, Vec3 c, const float* face_bound,
                   const RemovalLimits& limits) {
-  if (!bound_patch(ring, patch, c, open, face_bound)) return RejectBound;
+  if (!bound_patch(ring, patch, c, face_bound)) return RejectBound;
   for (int t = 0; t < patch.count; ++t)
     if (!(patch.bound[t] <= limits.max_error)) return RejectBound;
   return RejectCount;

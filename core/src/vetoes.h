@@ -49,7 +49,7 @@ Reject veto_shape(const Ring& ring, const Patch& patch, const FaceNormals& repla
 // Error bound (error_bound.h): the patch must project one-to-one with the fan it replaces, and
 // every new face's certified bound (written into patch.bound) must stay within
 // limits.max_error. `face_bound`: each face slot's bound; `c`: the removed vertex's position.
-Reject veto_bound(const Ring& ring, Patch& patch, Vec3 c, OpenRing open, const float* face_bound,
+Reject veto_bound(const Ring& ring, Patch& patch, Vec3 c, const float* face_bound,
                   const RemovalLimits& limits);
 
 } // namespace vrs

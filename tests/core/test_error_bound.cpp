@@ -22,16 +22,6 @@ Options bounded(double max_error, size_t faces = 0) {
   return o;
 }
 
-double diagonal(const Mesh& m) {
-  double lo[3] = {HUGE_VAL, HUGE_VAL, HUGE_VAL}, hi[3] = {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
-  for (size_t i = 0; i < m.positions.size(); i += 3)
-    for (int c = 0; c < 3; ++c)
-      lo[c] = std::min(lo[c], double(m.positions[i + c])),
-      hi[c] = std::max(hi[c], double(m.positions[i + c]));
-  return std::sqrt((hi[0] - lo[0]) * (hi[0] - lo[0]) + (hi[1] - lo[1]) * (hi[1] - lo[1]) +
-                   (hi[2] - lo[2]) * (hi[2] - lo[2]));
-}
-
 Vec3 at(const Mesh& m, uint32_t v) {
   return {m.positions[3 * v], m.positions[3 * v + 1], m.positions[3 * v + 2]};
 }
@@ -96,7 +86,7 @@ TEST(ErrorBound, RealMeshesStayWithinTheBoundTheyCertify) {
     const std::string path = vrs_test::cgal_mesh(std::string(name) + ".off");
     if (path.empty()) GTEST_SKIP() << "CGAL data set missing";
     const Mesh in = vrs_test::read_off(path);
-    const double diag = diagonal(in);
+    const double diag = bounding_box_diagonal(in);
     for (double fraction : {0.002, 0.01}) {
       Mesh out = in;
       const Options o = bounded(fraction * diag);
@@ -114,7 +104,7 @@ TEST(ErrorBound, WhicheverOfBoundAndFaceTargetComesFirst) {
   const std::string path = vrs_test::cgal_mesh("elephant.off");
   if (path.empty()) GTEST_SKIP() << "CGAL data set missing";
   const Mesh in = vrs_test::read_off(path);
-  const double diag = diagonal(in);
+  const double diag = bounding_box_diagonal(in);
   Mesh loose = in, tight = in;
   const Report a = simplify(loose, bounded(0.05 * diag, in.face_count() / 2));
   EXPECT_EQ(a.stop, StopReason::TargetReached);
@@ -129,7 +119,7 @@ TEST(ErrorBound, SameOutputOnAnyThreadCount) {
   const std::string path = vrs_test::cgal_mesh("fandisk.off");
   if (path.empty()) GTEST_SKIP() << "CGAL data set missing";
   const Mesh in = vrs_test::read_off(path);
-  Options o = bounded(0.01 * diagonal(in));
+  Options o = bounded(0.01 * bounding_box_diagonal(in));
   o.threads = 3;
   Mesh out = in;
   const Report r = simplify(out, o);

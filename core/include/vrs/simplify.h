@@ -214,6 +214,10 @@ constexpr uint32_t kRemoved = 0xffffffffu;
 // left exactly as given. Deterministic: the same input and options give the same output.
 Report simplify(Mesh& mesh, const Options& options);
 
+// Length of the diagonal of the bounding box of the finite positions (0 when there is none):
+// the unit of relative errors (CLI --max-error E%, the plugin's MaxError, the benchmark).
+double bounding_box_diagonal(const Mesh& mesh);
+
 // Short parsers used by the adapters (CLI, plugin): false on an unknown name.
 bool parse_mode(const std::string& s, Mode& out);
 bool parse_queue(const std::string& s, QueueKind& out);
