@@ -44,48 +44,73 @@ double distance_to_segment(Vec3 p, Vec3 a, Vec3 b) {
   return length(p - (a + ab * t));
 }
 
+OldFan::OldFan(uint32_t v, const Ring& ring, const Patch& patch, const Evaluator& eval)
+    : ring_(ring), patch_(patch), c_(eval.position(v)) {
+  const int k = ring.verts;
+  const auto& q = patch.q;
+  for (int i = 0; i < ring.faces; ++i) {
+    Vec3 x = cross(q[i] - c_, q[(i + 1) % k] - c_);
+    area_ += 0.5 * length(x);
+    n_[i] = normalized(x);
+  }
+}
+
+double OldFan::to_face2(Vec3 x, int i, double best) const {
+  const double h = dot(x - c_, n_[i]);
+  if (h * h >= best) return best;
+  return std::min(best,
+                  point_triangle_distance2(x, c_, patch_.q[i], patch_.q[(i + 1) % ring_.verts]));
+}
+
+double OldFan::distance2(Vec3 x) const {
+  // The old fan projects without folds along the patch's normal, so a point of the new patch
+  // lies over one old triangle: measure to it and its two neighbours (to all of them if
+  // rounding says it lies over none).
+  const int k = ring_.verts;
+  const auto& p = patch_.p;
+  const Vec2 o{0, 0};
+  const Vec2 s{dot(x - c_, patch_.u), dot(x - c_, patch_.w)};
+  double d = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < ring_.faces; ++i) {
+    int j = (i + 1) % k;
+    if (!(orient2d(o, p[i], s) >= 0 && orient2d(o, s, p[j]) >= 0 && orient2d(p[i], p[j], s) >= 0))
+      continue;
+    d = point_triangle_distance2(x, c_, patch_.q[i], patch_.q[j]);
+    if (i > 0 || ring_.closed()) d = to_face2(x, (i + k - 1) % k, d);
+    if (j < ring_.faces) d = to_face2(x, j, d);
+    return d;
+  }
+  for (int i = 0; i < ring_.faces; ++i)
+    d = to_face2(x, i, d);
+  return d;
+}
+
+double triangle_error2(const OldFan& fan, const Ring& ring, const Patch& patch, int a, int b,
+                       int c) {
+  const auto& q = patch.q;
+  const int k = ring.verts;
+  double worst = fan.distance2((q[a] + q[b] + q[c]) * (1.0 / 3));
+  const int corner[3] = {a, b, c};
+  for (int e = 0; e < 3; ++e) {
+    const int i = corner[e], j = corner[(e + 1) % 3];
+    const bool ring_edge = i + 1 == j || j + 1 == i ||
+                           (ring.closed() && ((i == k - 1 && j == 0) || (j == k - 1 && i == 0)));
+    if (!ring_edge) worst = std::max(worst, fan.distance2((q[i] + q[j]) * 0.5));
+  }
+  return worst;
+}
+
 double patch_error(uint32_t v, const Ring& ring, const Patch& patch, const Evaluator& eval,
                    double reference_area) {
   const int k = ring.verts;
   const Vec3 c = eval.position(v);
   const auto& q = patch.q; // as planned: positions, and their projections `p` on (u, w)
   const auto& p = patch.p;
-  const Vec3 u = patch.u, w = patch.w;
-  // Unit normals of the old fan's triangles, for the plane-distance lower bound that skips
-  // most exact point-triangle queries; their lengths give the fan's area.
-  std::array<Vec3, kMaxRing> old_n;
-  double area = 0;
-  for (int i = 0; i < ring.faces; ++i) {
-    Vec3 x = cross(q[i] - c, q[(i + 1) % k] - c);
-    area += 0.5 * length(x);
-    old_n[i] = normalized(x);
-  }
-  // Squared distances throughout (one square root at the end).
-  auto to_old = [&](Vec3 x, int i, double best) {
-    const double h = dot(x - c, old_n[i]);
-    if (h * h >= best) return best;
-    return std::min(best, point_triangle_distance2(x, c, q[i], q[(i + 1) % k]));
-  };
-  // The old fan projects without folds along the patch's normal, so a point of the new patch
-  // lies over one old triangle: measure to it and its two neighbours (to all of them if
-  // rounding says it lies over none).
   const Vec2 o{0, 0};
-  auto to_old_fan = [&](Vec3 x) {
-    Vec2 s{dot(x - c, u), dot(x - c, w)};
-    double d = std::numeric_limits<double>::infinity();
-    for (int i = 0; i < ring.faces; ++i) {
-      int j = (i + 1) % k;
-      if (!(orient2d(o, p[i], s) >= 0 && orient2d(o, s, p[j]) >= 0 && orient2d(p[i], p[j], s) >= 0))
-        continue;
-      d = point_triangle_distance2(x, c, q[i], q[j]);
-      if (i > 0 || ring.closed()) d = to_old(x, (i + k - 1) % k, d);
-      if (j < ring.faces) d = to_old(x, j, d);
-      return d;
-    }
-    for (int i = 0; i < ring.faces; ++i)
-      d = to_old(x, i, d);
-    return d;
-  };
+  // Squared distances throughout (one square root at the end).
+  const OldFan fan(v, ring, patch, eval);
+  const double area = fan.area();
+  auto to_old_fan = [&](Vec3 x) { return fan.distance2(x); };
 
   double worst = 0;
   for (int t = 0; t < patch.count; ++t) {

@@ -17,6 +17,28 @@ double point_triangle_distance2(Vec3 p, Vec3 a, Vec3 b, Vec3 c); // squared
 // Distance from p to the segment (a, b).
 double distance_to_segment(Vec3 p, Vec3 a, Vec3 b);
 
+// The fan of triangles around a removed vertex, as planned (`patch` holds the ring's positions
+// and projection): squared distances from points of a new patch to it.
+class OldFan {
+ public:
+  OldFan(uint32_t v, const Ring& ring, const Patch& patch, const Evaluator& eval);
+  double distance2(Vec3 x) const;
+  double area() const { return area_; }
+
+ private:
+  double to_face2(Vec3 x, int i, double best) const; // min(best, distance^2 to face i)
+  const Ring& ring_;
+  const Patch& patch_;
+  Vec3 c_;
+  double area_ = 0;
+  std::array<Vec3, kMaxRing> n_; // unit normals: the plane distance skips most exact queries
+};
+
+// Squared distance to the old fan of the new triangle (a, b, c) (ring positions): the largest
+// of its centroid's and its new edges' midpoints' (patch_error's terms for one triangle).
+double triangle_error2(const OldFan& fan, const Ring& ring, const Patch& patch, int a, int b,
+                       int c);
+
 // Largest of: the removed vertex's distance to the new patch, and the distance of each new
 // triangle's centroid and each new diagonal's midpoint to the old fan (zero for a flat ring),
 // weighted by sqrt(fan area / reference_area): the same offset over a wider patch moves more

@@ -9,6 +9,7 @@
 #include "heap_queue.h"
 #include "input_check.h"
 #include "local_error.h"
+#include "orientation.h"
 #include "removal.h"
 #include "spatial_order.h"
 #include "topology.h"
@@ -203,6 +204,10 @@ void Simplifier::prepare() {
             flags_[t[i + 2]] |= kFlagLocked;
 
   topo_.build(t, n);
+  // Before anything reads a fan: faces written in random orientation make every vertex look
+  // non-manifold.
+  std::vector<uint8_t> reversed;
+  rep_.reoriented_faces = orient_coherently(mesh_.triangles, topo_, face_source_.data(), reversed);
   {
     Options renumbered = opt_;
     std::vector<uint32_t> pairs;
@@ -218,7 +223,8 @@ void Simplifier::prepare() {
     corner_source_.resize(t.size());
     for (size_t f = 0; f < face_source_.size(); ++f)
       for (int c = 0; c < 3; ++c)
-        corner_source_[3 * f + c] = 3 * face_source_[f] + c;
+        corner_source_[3 * f + c] =
+            3 * face_source_[f] + (reversed.empty() || !reversed[f] || !c ? c : 3 - c);
   }
   normals_ = vertex_normals(mesh_.positions, t);
   reference_area_ = mean_triangle_area(mesh_.positions.data(), t);
@@ -683,10 +689,15 @@ template <class Queue> bool Simplifier::relax(Queue& queue) {
         (target_vertices_ && b > long(target_vertices_)))
       return false;
   }
-  // What the last resort lifts, in one place: the vetoes' and the evaluation's settings, and
-  // (through removable()) the single triangles.
+  // What the last resort lifts, in one place: the input normals asked of one corner of a new
+  // triangle only, the outline corners (the evaluation's setting) and, through removable(),
+  // the single triangles; and where every filling is refused, the least-cost one is tried.
+  // The fold-over veto stays: where only folding fillings are left, the run stops and says
+  // so. (In two steps, input normals at two corners first, it measured worse: cow at 1 %,
+  // mean 0.0193 against 0.0149 of the diagonal; ChineseDragon-10kv stalled above its target.)
   last_resort_ = true;
-  limits_.input_normals = false;
+  limits_.agreeing_corners = 1;
+  limits_.least_cost_filling = true;
   eval_.set_boundary_corner_cos(-1.0);
   Ring ring;
   const uint32_t* tris = mesh_.triangles.data();
@@ -750,6 +761,10 @@ std::string Simplifier::explain_stop() const {
   for (size_t r : refused_by)
     total_refused += r;
   add(total_refused, "refused by the vetoes (" + vetoes + ")");
+  if (last_resort_ && refused_by[RejectFoldOver])
+    out += "; the last resort stopped: every filling left for " +
+           std::to_string(refused_by[RejectFoldOver]) +
+           " of them would fold the surface over the faces it replaces";
   add(untried, "without a usable plane (degenerate or non-finite neighbourhood)");
   return "remaining vertices: " + (out.empty() ? std::string("none") : out);
 }
@@ -805,6 +820,7 @@ std::string input_warnings(const Report& r) {
     w += std::to_string(count) + " " + what;
   };
   add(r.dropped_degenerate_faces, "faces with a repeated vertex dropped");
+  add(r.reoriented_faces, "faces reversed to agree with their neighbours' orientation");
   add(r.nonfinite_vertices, "vertices with NaN/inf coordinates kept with their neighbours");
   add(r.kept_nonmanifold, "non-manifold vertices kept");
   add(r.kept_high_valence, "vertices of too high valence kept");

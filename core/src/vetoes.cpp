@@ -55,41 +55,48 @@ void replaced_face_normals(uint32_t v, const Ring& ring, const Patch& patch, con
     out[i] = normalized(cross(patch.q[i] - c, patch.q[(i + 1) % ring.verts] - c));
 }
 
-Reject veto_shape(const Ring& ring, const Patch& patch, const FaceNormals& old_n,
-                  const float* surface_normals, const RemovalLimits& limits, bool plane_angle) {
+Reject veto_triangle(const Ring& ring, const Patch& patch, std::array<uint8_t, 3> tri,
+                     const FaceNormals& old_n, const float* surface_normals,
+                     const RemovalLimits& limits, bool plane_angle) {
   const int k = ring.verts;
   const auto& q = patch.q;
   auto folds_on = [&](Vec3 face, int i) { return !(dot(face, old_n[i]) > limits.min_fold_cos); };
+  Vec3 a = q[tri[0]], b = q[tri[1]], d = q[tri[2]];
+  if (triangle_quality(a, b, d) < limits.min_quality) return RejectDegenerate;
+  Vec3 face = normalized(cross(b - a, d - a));
+  if (plane_angle && dot(face, patch.normal) < limits.min_normal_cos) return RejectFlip;
+  int agreeing = 0;
+  for (int e = 0; e < 3; ++e) {
+    const float* sn = surface_normals + 3 * size_t(ring.v[tri[e]]);
+    agreeing += dot(face, Vec3{sn[0], sn[1], sn[2]}) > 0;
+  }
+  if (agreeing < limits.agreeing_corners) return RejectFlip;
+  // The faces it replaces: the old face on each of its ring edges; a triangle made of
+  // diagonals only answers to the old faces at its corners.
+  bool on_ring_edge = false;
+  for (int e = 0; e < 3; ++e) {
+    int i = tri[e], j = tri[(e + 1) % 3];
+    if (j == (i + 1) % k && i < ring.faces) {
+      on_ring_edge = true;
+      if (folds_on(face, i)) return RejectFoldOver;
+    }
+  }
+  if (!on_ring_edge)
+    for (int e = 0; e < 3; ++e) {
+      int i = tri[e];
+      if (i < ring.faces && folds_on(face, i)) return RejectFoldOver;
+      int before = i > 0 ? i - 1 : ring.closed() ? k - 1 : -1;
+      if (before >= 0 && folds_on(face, before)) return RejectFoldOver;
+    }
+  return RejectCount;
+}
 
+Reject veto_shape(const Ring& ring, const Patch& patch, const FaceNormals& old_n,
+                  const float* surface_normals, const RemovalLimits& limits, bool plane_angle) {
   for (int t = 0; t < patch.count; ++t) {
-    const auto& tri = patch.tri[t];
-    Vec3 a = q[tri[0]], b = q[tri[1]], d = q[tri[2]];
-    if (triangle_quality(a, b, d) < limits.min_quality) return RejectDegenerate;
-    Vec3 face = normalized(cross(b - a, d - a));
-    if (plane_angle && dot(face, patch.normal) < limits.min_normal_cos) return RejectFlip;
-    int agreeing = 0;
-    for (int e = 0; e < 3; ++e) {
-      const float* sn = surface_normals + 3 * size_t(ring.v[tri[e]]);
-      agreeing += dot(face, Vec3{sn[0], sn[1], sn[2]}) > 0;
-    }
-    if (agreeing < (limits.input_normals ? 3 : 1)) return RejectFlip;
-    // The faces it replaces: the old face on each of its ring edges; a triangle made of
-    // diagonals only answers to the old faces at its corners.
-    bool on_ring_edge = false;
-    for (int e = 0; e < 3; ++e) {
-      int i = tri[e], j = tri[(e + 1) % 3];
-      if (j == (i + 1) % k && i < ring.faces) {
-        on_ring_edge = true;
-        if (folds_on(face, i)) return RejectFoldOver;
-      }
-    }
-    if (!on_ring_edge)
-      for (int e = 0; e < 3; ++e) {
-        int i = tri[e];
-        if (i < ring.faces && folds_on(face, i)) return RejectFoldOver;
-        int before = i > 0 ? i - 1 : ring.closed() ? k - 1 : -1;
-        if (before >= 0 && folds_on(face, before)) return RejectFoldOver;
-      }
+    const Reject why =
+        veto_triangle(ring, patch, patch.tri[t], old_n, surface_normals, limits, plane_angle);
+    if (why != RejectCount) return why;
   }
   return RejectCount;
 }

@@ -20,11 +20,15 @@ struct RemovalLimits {
   // A new triangle whose normal makes more than 90° with a face it replaces folds the
   // surface over onto itself.
   double min_fold_cos = 0.0;
-  // A new triangle must also face the input surface's side at each of its corners (the input's
-  // vertex normals). After many removals its corners can be far apart on a curved part, so
-  // the driver's last resort, when nothing else is left to remove and the target is not met,
-  // asks it of one corner only (the fold-over veto stays).
-  bool input_normals = true;
+  // A new triangle must also face the input surface's side at this many of its corners (the
+  // input's vertex normals). After many removals its corners can be far apart on a curved
+  // part, so the driver's last resort, when nothing else is left to remove and the target is
+  // not met, asks it of one corner only (the fold-over veto stays).
+  int agreeing_corners = 3;
+  // The last resort's filling too (candidates.h, fill_least_cost), where every other one is
+  // refused: the triangulation of the ring whose triangles stand nearest the old fan, of those
+  // no veto refuses triangle by triangle.
+  bool least_cost_filling = false;
   // With an error bound tracked (Options::max_error): no new face's certified bound above it.
   double max_error = std::numeric_limits<double>::infinity();
 };
@@ -35,7 +39,7 @@ Reject veto_topology(const Ring& ring, const Patch& patch, OpenRing open, const 
                      const uint32_t* tris);
 
 // Shape: no sliver, no triangle facing against the input surface at its corners
-// (`surface_normals`, 3 floats a vertex; see limits.input_normals), none turned over against the
+// (`surface_normals`, 3 floats a vertex; see limits.agreeing_corners), none turned over against the
 // face(s) it replaces, and, when `plane_angle` (fillings made on the projection plane), none
 // steeper than limits.min_normal_cos to that plane.
 // `replaced`: the unit normals of the ring's faces (replaced_face_normals), the same for every
@@ -45,6 +49,11 @@ void replaced_face_normals(uint32_t v, const Ring& ring, const Patch& patch, con
                            FaceNormals& out);
 Reject veto_shape(const Ring& ring, const Patch& patch, const FaceNormals& replaced,
                   const float* surface_normals, const RemovalLimits& limits, bool plane_angle);
+
+// veto_shape for one new triangle (ring positions `tri`, counter-clockwise).
+Reject veto_triangle(const Ring& ring, const Patch& patch, std::array<uint8_t, 3> tri,
+                     const FaceNormals& replaced, const float* surface_normals,
+                     const RemovalLimits& limits, bool plane_angle);
 
 // Error bound (error_bound.h): the patch must project one-to-one with the fan it replaces, and
 // every new face's certified bound (written into patch.bound) must stay within

@@ -30,7 +30,7 @@ TEST(Vetoes, FoldOverRefusesAFanTurnedOverTheFaceItReplaces) {
   // The last-resort pass: one corner agreeing with the face is enough for the input-normal
   // veto; make every corner's input normal ambiguous (both sides) so that only the fold-over
   // veto is left to see the turned-over triangle.
-  limits.input_normals = false;
+  limits.agreeing_corners = 1;
   for (size_t i = 0; i < s.normals.size(); i += 3)
     s.normals[i + 2] = (i / 3) % 2 ? 1.0f : -1.0f;
   Patch p = projected(s, 6, {0, 0, 1});
@@ -46,7 +46,7 @@ TEST(Vetoes, FoldOverRefusesAFanTurnedOverTheFaceItReplaces) {
   // With the input normals all up and their veto on, the same fan is refused by it first.
   for (size_t i = 0; i < s.normals.size(); i += 3)
     s.normals[i + 2] = 1.0f;
-  limits.input_normals = true;
+  limits.agreeing_corners = 3;
   ASSERT_TRUE(fill_candidate(s.ring, OpenRing::Border, 1 + 2, p));
   EXPECT_EQ(veto_shape(s.ring, p, replaced(s, p, eval), s.normals.data(), limits, false),
             RejectFlip);

@@ -182,9 +182,14 @@ std::string check_subset(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::R
     uint32_t s = r.face_source[f];
     if (s == vrs::kRemoved) continue;
     if (s >= in.face_count()) return "face_source out of range";
-    for (int c = 0; c < 3; ++c)
-      if (r.remap[in.triangles[3 * s + c]] != out.triangles[3 * f + c])
-        return "face " + std::to_string(f) + " is not the input face its source names";
+    // Reversed (corners 1 and 2 swapped) only where the core reoriented the input.
+    bool same = true, reversed = r.reoriented_faces > 0;
+    for (int c = 0; c < 3; ++c) {
+      same = same && r.remap[in.triangles[3 * s + c]] == out.triangles[3 * f + c];
+      reversed = reversed && r.remap[in.triangles[3 * s + (3 - c) % 3]] == out.triangles[3 * f + c];
+    }
+    if (!same && !reversed)
+      return "face " + std::to_string(f) + " is not the input face its source names";
   }
   return {};
 }
@@ -243,6 +248,59 @@ size_t count_flipped_new(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::R
 
 std::vector<long> component_euler(const vrs::Mesh& m) {
   return euler_of(m, edge_counts(m));
+}
+
+size_t orient_coherently(vrs::Mesh& m) {
+  // Written apart from the core's (orientation.cpp), over an edge map: for each piece, breadth
+  // first from its lowest face, then the orientation most of its faces had (a tie: the lowest
+  // face's); a piece that is not orientable stays as given.
+  const size_t faces = m.face_count();
+  std::unordered_map<uint64_t, std::vector<uint32_t>> by_edge; // undirected edge -> faces
+  auto key = [](uint32_t a, uint32_t b) {
+    return a < b ? (uint64_t(a) << 32 | b) : (uint64_t(b) << 32 | a);
+  };
+  const auto& t = m.triangles;
+  for (size_t f = 0; f < faces; ++f)
+    for (int e = 0; e < 3; ++e)
+      by_edge[key(t[3 * f + e], t[3 * f + (e + 1) % 3])].push_back(uint32_t(f));
+  auto walks = [&](uint32_t f, uint32_t a, uint32_t b) { // does f walk a -> b?
+    for (int e = 0; e < 3; ++e)
+      if (t[3 * f + e] == a && t[3 * f + (e + 1) % 3] == b) return true;
+    return false;
+  };
+  std::vector<int> flip(faces, -1);
+  size_t total = 0;
+  for (size_t seed = 0; seed < faces; ++seed) {
+    if (flip[seed] >= 0) continue;
+    std::vector<uint32_t> piece{uint32_t(seed)};
+    flip[seed] = 0;
+    size_t reversed = 0;
+    bool orientable = true;
+    for (size_t i = 0; i < piece.size(); ++i) {
+      const uint32_t f = piece[i];
+      reversed += flip[f];
+      for (int e = 0; e < 3; ++e) {
+        const uint32_t a = t[3 * f + e], b = t[3 * f + (e + 1) % 3];
+        const auto& holders = by_edge[key(a, b)];
+        if (holders.size() != 2) continue;
+        const uint32_t g = holders[0] == f ? holders[1] : holders[0];
+        const int want = flip[f] ^ int(walks(g, a, b));
+        if (flip[g] >= 0) {
+          orientable = orientable && flip[g] == want;
+          continue;
+        }
+        flip[g] = want;
+        piece.push_back(g);
+      }
+    }
+    const int invert = 2 * reversed > piece.size();
+    for (uint32_t f : piece)
+      flip[f] = orientable ? flip[f] ^ invert : 0; // a non-orientable piece stays as given
+    if (orientable) total += invert ? piece.size() - reversed : reversed;
+  }
+  for (size_t f = 0; f < faces; ++f)
+    if (flip[f]) std::swap(m.triangles[3 * f + 1], m.triangles[3 * f + 2]);
+  return total;
 }
 
 vrs::Mesh without_repeated_corner_faces(const vrs::Mesh& m) {
@@ -313,7 +371,10 @@ std::string check_run(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Opti
   std::string e = check_indices(out); // before anything indexes with them
   if (!e.empty()) return e;
   // Each edge map once; the input's own only when it differs from the cleaned one.
-  const vrs::Mesh clean = without_repeated_corner_faces(in);
+  // The surface as the core reads it: reoriented where the core says it did.
+  vrs::Mesh clean = without_repeated_corner_faces(in);
+  if (r.reoriented_faces && orient_coherently(clean) != r.reoriented_faces)
+    return "reoriented_faces differs from the faces a coherent orientation reverses";
   const EdgeCounts clean_edges = edge_counts(clean), out_edges = edge_counts(out);
   const EdgeStats before = stats_of(clean, clean_edges), after = stats_of(out, out_edges);
   const size_t in_nonmanifold = clean.face_count() == in.face_count()

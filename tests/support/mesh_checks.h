@@ -43,6 +43,10 @@ size_t count_flipped_new(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::R
 std::vector<long> component_euler(const vrs::Mesh& m);
 // Same positions bit for bit (NaN included) and same triangles.
 bool same_bits(const vrs::Mesh& a, const vrs::Mesh& b);
+// Reverses faces so that neighbours agree on the orientation (each connected piece keeps the
+// one most of its faces had): the reference for the core's Report::reoriented_faces. Returns
+// the number reversed.
+size_t orient_coherently(vrs::Mesh& m);
 // The input without faces that repeat a corner (the core drops them first).
 vrs::Mesh without_repeated_corner_faces(const vrs::Mesh& m);
 

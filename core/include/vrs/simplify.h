@@ -177,15 +177,21 @@ struct Report {
   // What the input held that the simplifier had to work around.
   size_t dropped_degenerate_faces = 0; // faces with a repeated index (no area, no topology)
   size_t nonfinite_vertices = 0;       // NaN/inf coordinates: kept with their neighbours
+  // Faces whose corners were reversed (second and third swapped) so that neighbours agree on
+  // the orientation (in each connected piece, the one most of its faces had): a surface
+  // written in random orientation is simplified as the surface it is.
+  size_t reoriented_faces = 0;
   size_t kept_boundary = 0, kept_nonmanifold = 0, kept_locked = 0, kept_high_valence = 0;
   // Vertices kept by the constrained edges (on one, or on more than two; or on the border).
   size_t kept_constrained = 0;
   size_t constrained_edges = 0;     // constrained edges of the input (given and by feature angle)
   size_t unreferenced_vertices = 0; // left untouched
 
-  // Removals made by the last-resort pass: when nothing else was left to remove and a count
-  // target was not met, a new triangle no longer has to face the input's side at its corners
-  // (it still may not fold over the faces it replaces), and outline corners may go.
+  // Removals made by the last resort: when nothing else was left to remove and a count target
+  // was not met, a new triangle has to face the input's side at one of its corners only,
+  // outline corners may go, and where every fan and the projection is refused the ring's
+  // triangulation that stands nearest the old fan, of those no veto refuses, is taken. It
+  // still may not fold over the faces it replaces.
   size_t relaxed_removals = 0;
   // When the target was not reached (stop == NoCandidates): what keeps the remaining
   // vertices, e.g. "remaining vertices: 64 on the boundary, kept (boundary simplification is
@@ -197,8 +203,9 @@ struct Report {
   // the output and the input (mesh units; 0 when nothing was removed). Else 0.
   double error_bound = 0.0;
   std::vector<uint32_t> remap; // old vertex index -> new index, or kRemoved
-  // For each output face, the input face it is (same corners, same order), or kRemoved for a
-  // face the re-triangulation made: lets an adapter keep per-face data of untouched faces.
+  // For each output face, the input face it is (same corners, same order, or reversed if
+  // reoriented_faces counts it), or kRemoved for a face the re-triangulation made: lets an
+  // adapter keep per-face data of untouched faces.
   std::vector<uint32_t> face_source;
   // With Options::corner_sources: for each output face corner (3 an output face, in order), the
   // input corner (3 * input face + corner) whose per-corner data it takes. The corner is of

@@ -1,0 +1,23 @@
+// Coherent orientation: meshes whose faces were written in random order of corners (shuffled
+// exports, some scanners' output) are manifold surfaces all the same; only the order of their
+// faces' corners disagrees. The driver orients them before anything else reads the fans.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "topology.h"
+
+namespace vrs {
+
+// Reverses faces (corners 1 and 2 swapped) so that the two faces of every edge held by exactly
+// two faces walk it in opposite directions, in each connected piece that is orientable (others
+// stay as given); in
+// each piece the orientation most of its faces had is kept (on a tie, that of its face of
+// lowest `rank`: the caller's numbering, so the choice does not depend on the faces' order).
+// `flipped[f]` is set for each face reversed (sized to the face count when something is).
+// Returns the number reversed. `topo` holds the faces' vertex lists (a reversal keeps them).
+size_t orient_coherently(std::vector<uint32_t>& tris, const Topology& topo, const uint32_t* rank,
+                         std::vector<uint8_t>& flipped);
+
+} // namespace vrs
