@@ -84,14 +84,15 @@ void print_json(const vrs::Report& r, double seconds_simplify, double seconds_to
               "\"max_removed_factor\":%.9g,\"kept\":{\"boundary\":%zu,\"nonmanifold\":%zu,"
               "\"locked\":%zu,\"high_valence\":%zu,\"constrained\":%zu},"
               "\"constrained_edges\":%zu,\"input_issues\":{\"degenerate_faces\":%zu,"
-              "\"nonfinite_vertices\":%zu,\"unreferenced_vertices\":%zu},"
+              "\"nonfinite_vertices\":%zu,\"unreferenced_vertices\":%zu,"
+              "\"reoriented_faces\":%zu},"
               "\"relaxed_removals\":%zu,\"stop_detail\":\"%s\",\"error_bound\":%.9g,"
               "\"error_bound_percent\":%.9g}\n",
               r.rejected_total(), vrs::stop_reason_name(r.stop),
               r.target_reached ? "true" : "false", r.max_removed_factor, r.kept_boundary,
               r.kept_nonmanifold, r.kept_locked, r.kept_high_valence, r.kept_constrained,
               r.constrained_edges, r.dropped_degenerate_faces, r.nonfinite_vertices,
-              r.unreferenced_vertices, r.relaxed_removals, r.stop_detail.c_str(), r.error_bound,
+              r.unreferenced_vertices, r.reoriented_faces, r.relaxed_removals, r.stop_detail.c_str(), r.error_bound,
               diag > 0 ? 100.0 * r.error_bound / diag : 0.0);
 }
 

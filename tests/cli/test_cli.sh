@@ -159,5 +159,14 @@ printf 'COFF\n3 1 0\n0 0 0 255 0 0 255\n1 0 0 0 255 0 255\n0 1 0 0 0 255 255\n3 
 "$bin" "$out/colored.off" "$out/colored-off.ply" --ascii >/dev/null 2>&1 && grep -q "^0 1 0 0 0 255 255" "$out/colored-off.ply" && ok ||
   fail "COFF colours not kept: $(grep -A3 end_header "$out/colored-off.ply" 2>&1 | head -4)"
 
+# Faces in random orientation (every third one reversed): reoriented, counted, simplified to
+# the target (before, every vertex looked non-manifold and none was removed).
+awk 'NR == 2 { nv = $1 } NR > 2 + nv && NF == 4 && (++f % 3 == 0) { print $1, $2, $4, $3; next }
+     { print }' "$in" >"$out/shuffled.off"
+"$bin" "$out/shuffled.off" "$out/shuffled.ply" --ratio 0.1 --json >"$out/shuffled.json" 2>"$out/e" &&
+  [ "$(json_num "$out/shuffled.json" reoriented_faces)" -gt 4000 ] &&
+  [ "$(json_num "$out/shuffled.json" output_faces)" -le 1295 ] && ok ||
+  fail "shuffled orientation: $(cat "$out/shuffled.json" "$out/e")"
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]
