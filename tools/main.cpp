@@ -92,8 +92,8 @@ void print_json(const vrs::Report& r, double seconds_simplify, double seconds_to
               r.target_reached ? "true" : "false", r.max_removed_factor, r.kept_boundary,
               r.kept_nonmanifold, r.kept_locked, r.kept_high_valence, r.kept_constrained,
               r.constrained_edges, r.dropped_degenerate_faces, r.nonfinite_vertices,
-              r.unreferenced_vertices, r.reoriented_faces, r.relaxed_removals, r.stop_detail.c_str(), r.error_bound,
-              diag > 0 ? 100.0 * r.error_bound / diag : 0.0);
+              r.unreferenced_vertices, r.reoriented_faces, r.relaxed_removals,
+              r.stop_detail.c_str(), r.error_bound, diag > 0 ? 100.0 * r.error_bound / diag : 0.0);
 }
 
 void print_text(const vrs::Report& r, double seconds_simplify, double seconds_total, double diag,
