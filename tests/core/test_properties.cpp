@@ -128,8 +128,11 @@ TEST(Fill, BestReachesWhatTheProjectionAloneCannot) {
 // left); blobby-shuffled, its faces in random orientation, lost no vertex at all. Within 5 %
 // or 2 faces of the target, every invariant kept.
 TEST(Targets, ClosedMeshesReachWhatQecdWithPreserveTopologyReaches) {
-  for (auto [name, ratio] : {std::pair{"elk.off", 0.01}, {"femur.off", 0.01}, {"spool.off", 0.01},
-                             {"blobby-shuffled.off", 0.1}, {"blobby-shuffled.off", 0.01}}) {
+  for (auto [name, ratio] : {std::pair{"elk.off", 0.01},
+                             {"femur.off", 0.01},
+                             {"spool.off", 0.01},
+                             {"blobby-shuffled.off", 0.1},
+                             {"blobby-shuffled.off", 0.01}}) {
     const std::string path = vrs_test::cgal_mesh(name);
     if (path.empty()) GTEST_FAIL() << name << " missing: run scripts/setup.sh";
     const Mesh in = vrs_test::read_off(path);
