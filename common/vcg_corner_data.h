@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <cstring>
 #include <unordered_map>
+#include <utility>
 #include <vector>
 
 namespace vrs_vcg {
@@ -86,6 +87,25 @@ void copy_corner(const CornerData& d, const Face& from, int i, Face& to, int j, 
   if (d.normal) to.WN(j) = from.cWN(i);
   if (d.color) to.WC(j) = from.cWC(i);
   if (whole_face && d.face_color) to.C() = from.cC();
+}
+
+// Reverses a face as the core reverses one it reorients (vrs::Report::reoriented_faces):
+// corners 1 and 2 swapped with their per-corner data; the faux-edge flags (quads' diagonals)
+// follow their edges (edge 0 becomes edge 2 and the other way round).
+template <class Face> void reverse_face(const CornerData& d, Face& f) {
+  std::swap(f.V(1), f.V(2));
+  if (d.texcoord) std::swap(f.WT(1), f.WT(2));
+  if (d.normal) std::swap(f.WN(1), f.WN(2));
+  if (d.color) std::swap(f.WC(1), f.WC(2));
+  const bool faux0 = f.IsF(0), faux2 = f.IsF(2);
+  if (faux0)
+    f.SetF(2);
+  else
+    f.ClearF(2);
+  if (faux2)
+    f.SetF(0);
+  else
+    f.ClearF(0);
 }
 
 } // namespace vrs_vcg

@@ -81,6 +81,13 @@ void apply(CMeshO& m, const CoreCopy& c, const vrs::Mesh& out, const vrs::Report
     if (select_new_faces) fi->SetS();
     ++fi;
   }
+  // Faces the core reoriented keep their place, reversed.
+  for (size_t t = 0; t < r.face_source.size(); ++t) {
+    const uint32_t s = r.face_source[t];
+    if (s == vrs::kRemoved) continue;
+    CFaceO& f = m.face[c.face[s]];
+    if (f.V(1) != kept[out.triangles[3 * t + 1]]) vrs_vcg::reverse_face(d, f);
+  }
   for (size_t f = 0; f < c.face.size(); ++f)
     if (!survives[f]) vcg::tri::Allocator<CMeshO>::DeleteFace(m, m.face[c.face[f]]);
   for (size_t v = 0; v < r.remap.size(); ++v)

@@ -4,9 +4,12 @@
 // code from MeshLab; here the layer can be inspected after a failure, which they cannot do.
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <cstring>
 #include <limits>
+#include <set>
+#include <utility>
 
 #include "filter_plugin_2020.h"
 #include "test_meshes.h"
@@ -148,4 +151,45 @@ TEST_F(Direct, AwkwardInputComesOutValid) {
     }
     EXPECT_TRUE(f.cV(0) != f.cV(1) && f.cV(1) != f.cV(2) && f.cV(0) != f.cV(2));
   }
+}
+
+TEST_F(Direct, ShuffledOrientationComesOutCoherentWithItsCornerData) {
+  // One face in three written the other way round, with a wedge texture coordinate naming
+  // each corner's vertex: after the filter, faces kept and faces made alike walk every edge
+  // opposite to their neighbour, and each corner still carries its own vertex's data.
+  vrs::Mesh in = vrs_test::icosphere(3);
+  for (size_t f = 0; f < in.face_count(); f += 3)
+    std::swap(in.triangles[3 * f + 1], in.triangles[3 * f + 2]);
+  MeshModel* m = load(in);
+  m->updateDataMask(MeshModel::MM_WEDGTEXCOORD);
+  for (auto& f : m->cm.face)
+    for (int c = 0; c < 3; ++c)
+      f.WT(c).U() = float(vcg::tri::Index(m->cm, f.V(c)));
+  // Most faces survive at 80 %, a third of them reversed by the core.
+  std::set<std::array<float, 3>> reversed_corners; // (first, second, third) corner's x, as given
+  for (size_t f = 0; f < in.face_count(); f += 3)
+    reversed_corners.insert({in.positions[3 * in.triangles[3 * f]],
+                             in.positions[3 * in.triangles[3 * f + 2]],
+                             in.positions[3 * in.triangles[3 * f + 1]]});
+  ASSERT_TRUE(apply(*m, [](auto& p) { p.setValue("TargetPerc", FloatValue(0.8f)); }))
+      << qUtf8Printable(plugin.errorMsg());
+  EXPECT_LE(m->cm.fn, int(std::llround(0.8 * double(in.face_count()))));
+  std::set<std::pair<const CVertexO*, const CVertexO*>> directed;
+  size_t kept = 0, turned = 0;
+  for (const auto& f : m->cm.face) {
+    if (f.IsD()) continue;
+    for (int c = 0; c < 3; ++c) {
+      EXPECT_TRUE(directed.insert({f.cV(c), f.cV((c + 1) % 3)}).second) << "an edge walked twice";
+      // The positions were compacted: the coordinate names the vertex's input index, whose
+      // position is the input's.
+      const uint32_t was = uint32_t(f.cWT(c).U());
+      ASSERT_LT(was, in.vertex_count());
+      EXPECT_EQ(f.cV(c)->cP()[0], in.positions[3 * was]);
+      EXPECT_EQ(f.cV(c)->cP()[2], in.positions[3 * was + 2]);
+    }
+    ++kept;
+    turned += reversed_corners.count({f.cV(0)->cP()[0], f.cV(1)->cP()[0], f.cV(2)->cP()[0]});
+  }
+  EXPECT_GT(kept, 0u);
+  EXPECT_GT(turned, 50u) << "faces written reversed, kept and turned round";
 }
