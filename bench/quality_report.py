@@ -7,7 +7,7 @@ Every error figure is a ratio to MeshLab's Quadric Edge Collapse Decimation with
 defaults ("qecd"), on the same mesh and target, reported as the median and as the geometric
 mean of the ratios clamped to [0.1, 10]: a plain geometric mean is ruled by flat CAD parts whose
 errors are ~1e-7 of the diagonal (one run at 0.001 outweighs a dozen at 1.3). A run where both
-errors are zero counts as 1. Runs more than 5 % over their target are counted, never hidden:
+errors are zero counts as 1. Runs more than 5 % (and 2 faces) over their target are counted, never hidden:
 the class table compares only the runs where every vertex-keeping method reached the target.
 
 Held-out meshes: a fixed share of the set (sha1 of "set/mesh", first byte % 4 == 0, without
@@ -38,7 +38,7 @@ OTHERS = [
     ("vtk", "vtkDecimatePro, PreserveTopology on (vertex removal; often stops early)"),
     ("qecd-topology", "MeshLab QECD with Preserve Topology"),
 ]
-OVER = 1.05  # more than 5 % over the target face count is off target
+OVER, SLACK = 1.05, 2  # off target: more than 5 % and more than 2 faces over the target
 CLAMP = (0.1, 10.0)
 
 
@@ -77,7 +77,8 @@ def gmean(xs):
 
 
 def off(row):
-    return int(row["output_faces"]) > OVER * max(1, int(row["target_faces"]))
+    target = int(row["target_faces"])
+    return int(row["output_faces"]) > max(OVER * target, target + SLACK)
 
 
 def ratios(runs, keys, method, field):
@@ -173,17 +174,18 @@ def main():
         "- **err ÷ QECD**: the method's mean (max) symmetric Hausdorff distance over MeshLab QECD's "
         "(dialog defaults, which move vertices) on the same mesh and target; **median** and "
         "**geometric mean of the ratios clamped to [0.1, 10]** (both zero: 1).",
-        "- **off target**: runs more than 5 % over the target face count (closed meshes of few faces "
+        "- **off target**: runs more than 5 % and more than 2 faces over the target face count (closed meshes of few faces "
         "cannot reach 1 % without changing their genus; QECD with Preserve Topology misses most of them too).",
         "- **fold area**: mean share of the output area whose face turns more than 90° from the "
-        "input face nearest to it (QECD's in brackets).",
+        "input face nearest to it (QECD's in brackets); an input written with its faces in random "
+        "orientation (`*-shuffled`) is read oriented coherently, each piece as most of its faces were.",
         f"- **held out**: {len(held)} meshes no tuning loop ran on (sha1 of set/mesh, first byte % 4 = 0, "
         "without the benchmark's six): " + ", ".join(held) + ".",
         "",
         "## The vertex-keeping class",
         "",
         "Median mean / max error ÷ full QECD on the runs where every method of the class reached "
-        "its target (within 5 %); bold: the lowest median mean error.",
+        "its target (within 5 % or 2 faces); bold: the lowest median mean error.",
         "",
     ]
     all_keys = list(runs)

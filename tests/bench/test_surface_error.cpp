@@ -71,3 +71,17 @@ TEST(FoldOverShare, CountsTheAreaFacingAgainstTheNearestInputFace) {
     std::swap(half.triangles[3 * f + 1], half.triangles[3 * f + 2]);
   EXPECT_NEAR(vrs_bench::fold_over_share(m, half, 20000), 0.5, 0.05);
 }
+
+TEST(FoldOverShare, AnInputInRandomOrientationIsReadCoherently) {
+  // A sphere written one face in three reversed stands for the sphere: the coherent sphere
+  // folds nowhere against it, the sphere turned inside out everywhere. (Read as written, a
+  // third of either would count as folded.)
+  const vrs::Mesh m = vrs_test::icosphere(3);
+  vrs::Mesh shuffled = m, inside_out = m;
+  for (size_t f = 0; f < shuffled.face_count(); f += 3)
+    std::swap(shuffled.triangles[3 * f + 1], shuffled.triangles[3 * f + 2]);
+  for (size_t f = 0; f < inside_out.face_count(); ++f)
+    std::swap(inside_out.triangles[3 * f + 1], inside_out.triangles[3 * f + 2]);
+  EXPECT_EQ(vrs_bench::fold_over_share(shuffled, m, 20000), 0.0);
+  EXPECT_EQ(vrs_bench::fold_over_share(shuffled, inside_out, 20000), 1.0);
+}
