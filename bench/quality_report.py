@@ -212,6 +212,10 @@ def main():
                           f"(QECD-topology {qt['output_faces']}; {r['note'] or 'no note'})")
     lines += misses or ["- none"]
     lines.append("")
+    # What was tried and measured beside the default (hand-kept: variants that did not land).
+    ablation = os.path.join(os.path.dirname(os.path.abspath(__file__)), "ablation.md")
+    if os.path.exists(ablation):
+        lines += [open(ablation).read().rstrip("\n"), ""]
     open(out, "w").write("\n".join(lines))
 
 

@@ -6,7 +6,7 @@
 # does), the paper's factor ("ours-factor"), the vertex-keeping class (MeshLab's QECD with
 # optimal placement off, OpenMesh's decimater with its quadric module, meshoptimizer,
 # vtkDecimatePro), MeshLab's QECD with its defaults (the yardstick) and with Preserve Topology,
-# and the core of BASELINE (default: 9d923f8, the last commit before this work; built once into
+# and the core of BASELINE (default: 57dcb5e, the last commit before this work; built once into
 # $VRS_CACHE). One job per core (meshes shared out), one thread per run. Writes
 # bench/quality.csv and bench/QUALITY.md (bench/quality_report.py: medians and clamped
 # geometric means, the class table, the held-out meshes apart, the worst runs).
@@ -17,7 +17,7 @@
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
 cache=${VRS_CACHE:-/var/cache/vrsimplify}
-samples=30000 baseline=9d923f8 only=() tuning=0 csv="" \
+samples=30000 baseline=57dcb5e only=() tuning=0 csv="" \
   methods=ours,ours-boundary,ours-factor,qecd,qecd-topology,qecd-keep,openmesh,meshopt,vtk
 while [ $# -gt 0 ]; do
   case $1 in
