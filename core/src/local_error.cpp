@@ -85,6 +85,19 @@ double OldFan::distance2(Vec3 x) const {
   return d;
 }
 
+bool OldFan::opposes_near(Vec3 x, Vec3 n, double slack) const {
+  const int k = ring_.verts;
+  std::array<double, kMaxRing> d;
+  double nearest = std::numeric_limits<double>::infinity();
+  for (int i = 0; i < ring_.faces; ++i) {
+    d[i] = std::sqrt(point_triangle_distance2(x, c_, patch_.q[i], patch_.q[(i + 1) % k]));
+    nearest = std::min(nearest, d[i]);
+  }
+  for (int i = 0; i < ring_.faces; ++i)
+    if (d[i] <= nearest + slack && dot(n, n_[i]) > 0) return false;
+  return true;
+}
+
 double triangle_error2(const OldFan& fan, const Ring& ring, const Patch& patch, int a, int b,
                        int c) {
   const auto& q = patch.q;

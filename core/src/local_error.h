@@ -23,6 +23,9 @@ class OldFan {
  public:
   OldFan(uint32_t v, const Ring& ring, const Patch& patch, const Evaluator& eval);
   double distance2(Vec3 x) const;
+  // Whether every face within (the nearest one's distance + `slack`) of x turns more than 90°
+  // from the unit normal n: x's neighbourhood of the old fan faces against n.
+  bool opposes_near(Vec3 x, Vec3 n, double slack) const;
   double area() const { return area_; }
 
  private:
