@@ -189,9 +189,9 @@ struct Report {
 
   // Removals made by the last resort: when nothing else was left to remove and a count target
   // was not met, a new triangle has to face the input's side at one of its corners only,
-  // outline corners may go, and where every fan and the projection is refused the ring's
-  // triangulation that stands nearest the old fan, of those no veto refuses, is taken. It
-  // still may not fold over the faces it replaces.
+  // outline corners may go, and where every fan and the projection of an interior vertex is
+  // refused, the ring's triangulation that stands nearest the old fan, of those no veto
+  // refuses, is taken. It still may not fold over the faces it replaces.
   size_t relaxed_removals = 0;
   // When the target was not reached (stop == NoCandidates): what keeps the remaining
   // vertices, e.g. "remaining vertices: 64 on the boundary, kept (boundary simplification is
