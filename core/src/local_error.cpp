@@ -98,17 +98,26 @@ bool OldFan::opposes_near(Vec3 x, Vec3 n, double slack) const {
   return true;
 }
 
+namespace {
+
+// Whether (i, j) (ring positions) is a new edge of a patch: not a ring edge (an open ring's
+// closing edge is new too).
+bool is_new_edge(const Ring& ring, int i, int j) {
+  const int k = ring.verts;
+  return !(i + 1 == j || j + 1 == i ||
+           (ring.closed() && ((i == k - 1 && j == 0) || (j == k - 1 && i == 0))));
+}
+
+} // namespace
+
 double triangle_error2(const OldFan& fan, const Ring& ring, const Patch& patch, int a, int b,
                        int c) {
   const auto& q = patch.q;
-  const int k = ring.verts;
   double worst = fan.distance2((q[a] + q[b] + q[c]) * (1.0 / 3));
   const int corner[3] = {a, b, c};
   for (int e = 0; e < 3; ++e) {
     const int i = corner[e], j = corner[(e + 1) % 3];
-    const bool ring_edge = i + 1 == j || j + 1 == i ||
-                           (ring.closed() && ((i == k - 1 && j == 0) || (j == k - 1 && i == 0)));
-    if (!ring_edge) worst = std::max(worst, fan.distance2((q[i] + q[j]) * 0.5));
+    if (is_new_edge(ring, i, j)) worst = std::max(worst, fan.distance2((q[i] + q[j]) * 0.5));
   }
   return worst;
 }
@@ -123,21 +132,18 @@ double patch_error(uint32_t v, const Ring& ring, const Patch& patch, const Evalu
   // Squared distances throughout (one square root at the end).
   const OldFan fan(v, ring, patch, eval);
   const double area = fan.area();
-  auto to_old_fan = [&](Vec3 x) { return fan.distance2(x); };
 
   double worst = 0;
   for (int t = 0; t < patch.count; ++t) {
     const auto& tri = patch.tri[t];
     Vec3 a = q[tri[0]], b = q[tri[1]], d = q[tri[2]];
-    worst = std::max(worst, to_old_fan((a + b + d) * (1.0 / 3)));
+    worst = std::max(worst, fan.distance2((a + b + d) * (1.0 / 3)));
     for (int e = 0; e < 3; ++e) {
       int i = tri[e], j = tri[(e + 1) % 3];
-      // Ring edges are kept as they are; diagonals (and an open ring's closing edge) are new.
-      bool ring_edge = i + 1 == j || j + 1 == i ||
-                       (ring.closed() && ((i == k - 1 && j == 0) || (j == k - 1 && i == 0)));
-      // Each diagonal is shared by two new triangles: measure it once.
-      if (!ring_edge && (i < j || (i == k - 1 && j == 0)))
-        worst = std::max(worst, to_old_fan((q[i] + q[j]) * 0.5));
+      // Ring edges are kept as they are; each diagonal is shared by two new triangles:
+      // measure it once.
+      if (is_new_edge(ring, i, j) && (i < j || (i == k - 1 && j == 0)))
+        worst = std::max(worst, fan.distance2((q[i] + q[j]) * 0.5));
     }
   }
   // The removed vertex to the new patch: first the triangle it projects into (usually the

@@ -31,13 +31,15 @@ size_t orient_coherently(std::vector<uint32_t>& tris, const Topology& topo, cons
                          std::vector<uint8_t>& flipped) {
   const size_t faces = tris.size() / 3;
   const uint32_t* t = tris.data();
-  // A cheap look first: does any manifold edge have its two faces walk it the same way?
+  // A cheap look first: does any manifold edge have its two faces walk it the same way? Such
+  // an edge is walked a -> b by both, so looking from the faces where a < b finds it.
   bool coherent = true;
   bool same = false;
   for (size_t f = 0; f < faces && coherent; ++f)
-    for (int e = 0; e < 3 && coherent; ++e)
-      if (across(uint32_t(f), t[3 * f + e], t[3 * f + (e + 1) % 3], t, topo, same) != kNone && same)
-        coherent = false;
+    for (int e = 0; e < 3 && coherent; ++e) {
+      const uint32_t a = t[3 * f + e], b = t[3 * f + (e + 1) % 3];
+      if (a < b && across(uint32_t(f), a, b, t, topo, same) != kNone && same) coherent = false;
+    }
   if (coherent) return 0;
 
   // Breadth-first over manifold edges: a face's reversal follows from its neighbour's.
