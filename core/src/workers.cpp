@@ -1,8 +1,30 @@
 #include "workers.h"
 
 #include <algorithm>
+#include <chrono>
 
 namespace vrs {
+
+namespace {
+
+// How long an idle thread polls for the next loop before it sleeps. The driver hands out a
+// loop every few tens of microseconds (a batch of plans, then its rewrites); a sleeping
+// thread takes longer than that to wake, and a loop is over before it is up.
+constexpr auto kSpin = std::chrono::microseconds(200);
+
+// One wait of a polling loop: a pause at first, then the core given up, so that more threads
+// than cores (a thread count above the machine's) still get their turn.
+inline void relax_cpu(int& polls) {
+  if (++polls < 2000) {
+#if defined(__x86_64__) || defined(__i386__)
+    __builtin_ia32_pause();
+#endif
+  } else {
+    std::this_thread::yield();
+  }
+}
+
+} // namespace
 
 int hardware_threads() {
   return std::max(1, int(std::thread::hardware_concurrency()));
@@ -16,7 +38,7 @@ Workers::Workers(int threads) {
 Workers::~Workers() {
   {
     std::lock_guard<std::mutex> lock(mutex_);
-    quit_ = true;
+    quit_.store(true);
   }
   wake_.notify_all();
   for (auto& t : pool_)
@@ -35,17 +57,20 @@ void Workers::work() {
 void Workers::serve() {
   size_t seen = 0;
   for (;;) {
-    {
+    // Poll first, then sleep until the generation moves.
+    const auto until = std::chrono::steady_clock::now() + kSpin;
+    int polls = 0;
+    while (generation_.load(std::memory_order_acquire) == seen && !quit_.load() &&
+           std::chrono::steady_clock::now() < until)
+      relax_cpu(polls);
+    if (generation_.load(std::memory_order_acquire) == seen) {
       std::unique_lock<std::mutex> lock(mutex_);
-      wake_.wait(lock, [&] { return quit_ || generation_ != seen; });
-      if (quit_) return;
-      seen = generation_;
+      wake_.wait(lock, [&] { return quit_.load() || generation_.load() != seen; });
     }
+    if (quit_.load()) return;
+    seen = generation_.load(std::memory_order_acquire);
     work();
-    {
-      std::lock_guard<std::mutex> lock(mutex_);
-      if (--busy_ == 0) done_.notify_one();
-    }
+    busy_.fetch_sub(1, std::memory_order_acq_rel);
   }
 }
 
@@ -56,19 +81,22 @@ void Workers::for_each(size_t n, const std::function<void(size_t)>& fn, size_t g
       fn(i);
     return;
   }
+  fn_ = &fn;
+  n_ = n;
+  grain_ = std::max<size_t>(1, grain);
+  next_.store(0, std::memory_order_relaxed);
+  busy_.store(int(pool_.size()), std::memory_order_relaxed);
   {
+    // Under the lock, so a thread between its last look and its wait cannot miss the wake.
     std::lock_guard<std::mutex> lock(mutex_);
-    fn_ = &fn;
-    n_ = n;
-    grain_ = std::max<size_t>(1, grain);
-    next_.store(0, std::memory_order_relaxed);
-    busy_ = int(pool_.size());
-    ++generation_;
+    generation_.fetch_add(1, std::memory_order_release);
   }
   wake_.notify_all();
   work();
-  std::unique_lock<std::mutex> lock(mutex_);
-  done_.wait(lock, [&] { return busy_ == 0; });
+  // The others finish their last items; they are running, so poll.
+  int polls = 0;
+  while (busy_.load(std::memory_order_acquire) != 0)
+    relax_cpu(polls);
 }
 
 } // namespace vrs

@@ -33,13 +33,13 @@ class Workers {
 
   std::vector<std::thread> pool_;
   std::mutex mutex_;
-  std::condition_variable wake_, done_;
+  std::condition_variable wake_;
   const std::function<void(size_t)>* fn_ = nullptr;
   size_t n_ = 0, grain_ = 1;
   std::atomic<size_t> next_{0};
-  size_t generation_ = 0;
-  int busy_ = 0;
-  bool quit_ = false;
+  std::atomic<size_t> generation_{0}; // one more per loop handed out
+  std::atomic<int> busy_{0};          // threads of the pool still in the current loop
+  std::atomic<bool> quit_{false};
 };
 
 // The number of threads Options::threads = 0 stands for: the machine's hardware threads.
