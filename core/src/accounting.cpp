@@ -1,0 +1,101 @@
+#include "accounting.h"
+
+#include "bucket_queue.h"
+#include "heap_queue.h"
+#include "simplifier.h"
+
+namespace vrs {
+
+void fan_area_changes(Vec3 c, const Ring& ring, const Patch& patch,
+                      std::array<double, kMaxRing + 1>& change) {
+  const int k = ring.verts;
+  const auto& q = patch.q;                         // the ring's positions
+  std::array<double, kMaxRing> old_area, new_area; // each face's area, made once
+  for (int f = 0; f < ring.faces; ++f)
+    old_area[f] = triangle_area(c, q[f], q[(f + 1) % k]);
+  for (int t = 0; t < patch.count; ++t)
+    new_area[t] = triangle_area(q[patch.tri[t][0]], q[patch.tri[t][1]], q[patch.tri[t][2]]);
+  for (int i = 0; i < k; ++i) {
+    double old_faces = 0, new_faces = 0;
+    // Ring face f holds ring vertices f and f + 1: vertex i was in faces i - 1 and i.
+    const int before = i > 0 ? i - 1 : ring.closed() ? k - 1 : -1;
+    for (int f : {before, i})
+      if (f >= 0 && f < ring.faces) old_faces += old_area[f];
+    for (int t = 0; t < patch.count; ++t) {
+      const auto& tri = patch.tri[t];
+      if (tri[0] == i || tri[1] == i || tri[2] == i) new_faces += new_area[t];
+    }
+    change[i] = new_faces - old_faces;
+  }
+}
+
+template <class Queue>
+void Simplifier::account(uint32_t v, const Ring& ring, const Patch& patch, Queue& queue) {
+  std::array<int, 2> seam;
+  if (along(v, ring, seam) == Along::Seam) constraints_.merge(v, ring.v[seam[0]], ring.v[seam[1]]);
+  flags_[v] |= kFlagRemoved;
+  faces_ -= static_cast<size_t>(ring.faces - patch.count);
+  --vertices_;
+  ++rep_.removed;
+  rep_.relaxed_removals += last_resort_;
+  rep_.max_removed_factor = std::max(rep_.max_removed_factor, double(factor_[v]));
+
+  // The neighbours' planes and rings changed. Queued ones are priced again when popped (lazy);
+  // the others (refused, or kept until now) are evaluated now and appended to the back of
+  // their interval, as every neighbour is with eager re-evaluation.
+  std::array<double, kMaxRing + 1> area_change;
+  if (lazy_) fan_area_changes(eval_.position(v), ring, patch, area_change);
+  for (int i = 0; i < ring.verts; ++i) {
+    const uint32_t u = ring.v[i];
+    const float before = lazy_ ? fan_area_[u] : 0.0f;
+    if (lazy_) fan_area_[u] = static_cast<float>(before + area_change[i]);
+    if (flags_[u] & kFlagLocked) continue;
+    if (lazy_ && queue.contains(u)) {
+      // Stale: priced again when popped. Meanwhile its place follows the part of its price
+      // known without a plan: the local error weighs distances by sqrt(fan area), and the
+      // fan's area just changed (the distances are taken as they were). Left in place, a
+      // neighbour whose price fell waits behind where it belongs.
+      flags_[u] |= kFlagStale;
+      if (before > 0 && fan_area_[u] > 0) {
+        factor_[u] = static_cast<float>(factor_[u] * std::sqrt(fan_area_[u] / before));
+        queue.update(u, factor_[u]);
+      }
+    } else {
+      reprice_.push_back(u);
+    }
+  }
+}
+
+template <class Queue> void Simplifier::reprice(Queue& queue) {
+  // A vertex is next to at most one removal of a batch, so the list has no repeats, and each
+  // price reads only the vertex's own ring.
+  repriced_.resize(reprice_.size());
+  const uint32_t* tris = mesh_.triangles.data();
+  workers_.for_each(reprice_.size(), [&](size_t i) {
+    const uint32_t u = reprice_[i];
+    Ring r;
+    VertexKind kind = topo_.ring(u, tris, opt_.max_valence, r);
+    repriced_[i] =
+        removable(kind) ? evaluate(u, r) : Priced{std::numeric_limits<double>::infinity()};
+  });
+  const bool by_factor = opt_.target.kind == TargetKind::MaxFactor;
+  for (size_t i = 0; i < reprice_.size(); ++i) {
+    const uint32_t u = reprice_[i];
+    const double f = repriced_[i].priority;
+    note(u, repriced_[i]);
+    factor_[u] = static_cast<float>(f);
+    flags_[u] &= ~kFlagStale;
+    if (std::isfinite(f) && (!by_factor || f <= opt_.target.max_factor))
+      queue.push(u, f);
+    else
+      queue.erase(u);
+  }
+  reprice_.clear();
+}
+
+template void Simplifier::account(uint32_t, const Ring&, const Patch&, BucketQueue&);
+template void Simplifier::account(uint32_t, const Ring&, const Patch&, HeapQueue&);
+template void Simplifier::reprice(BucketQueue&);
+template void Simplifier::reprice(HeapQueue&);
+
+} // namespace vrs

@@ -1,0 +1,31 @@
+// The run's result in the caller's terms: the surviving vertices and faces back in the input's
+// order, with what each output element came from, and the input's problems in words.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+#include "spatial_order.h"
+#include "vrs/simplify.h"
+
+namespace vrs {
+
+// What the run kept per face slot (internal order): the input face (kRemoved: rewritten), the
+// input corner each corner carries (empty: not asked), the certified bound (empty: none).
+struct SlotRecords {
+  const std::vector<uint32_t>& face_source;
+  const std::vector<uint32_t>& corner_source;
+  const std::vector<float>& face_bound;
+};
+
+// Rewrites `mesh` (internal order, dead slots holding kNone) as its live part in the input's
+// order: vertices by input index (`removed[v]` nonzero: gone), faces by the input slot they
+// took. Fills rep's remap, face_source, corner_source, error_bound, faces and vertices.
+void write_output(Mesh& mesh, const SpatialOrder& order, const std::vector<uint8_t>& removed,
+                  const SlotRecords& records, Report& rep);
+
+// The input's problems the run worked around ("3 faces with a repeated vertex dropped; ...").
+std::string input_warnings(const Report& r);
+
+} // namespace vrs

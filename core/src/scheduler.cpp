@@ -1,0 +1,48 @@
+#include "scheduler.h"
+
+#include "simplifier.h"
+
+namespace vrs {
+
+bool TakenMarks::holds(const std::vector<uint8_t>& flags, uint32_t v, const Ring& ring) const {
+  if (flags[v] & kFlagTaken) return false;
+  for (int i = 0; i < ring.verts; ++i)
+    if (flags[ring.v[i]] & kFlagTaken) return false;
+  return true;
+}
+
+void TakenMarks::mark(std::vector<uint8_t>& flags, uint32_t v, const Ring& ring) {
+  for (int i = -1; i < ring.verts; ++i) {
+    const uint32_t u = i < 0 ? v : ring.v[i];
+    if (!(flags[u] & kFlagTaken)) flags[u] |= kFlagTaken, marked_.push_back(u);
+  }
+}
+
+void TakenMarks::clear(std::vector<uint8_t>& flags) {
+  for (uint32_t u : marked_)
+    flags[u] &= uint8_t(~kFlagTaken);
+  marked_.clear();
+}
+
+void Simplifier::plan_batch(size_t count) {
+  const bool local = opt_.priority == Priority::LocalError;
+  workers_.for_each(count, [&](size_t b) {
+    Planned& p = batch_[b];
+    p.stale = flags_[p.v] & kFlagStale;
+    p.why = RejectCount;
+    p.usable = removable(topo_.ring(p.v, mesh_.triangles.data(), opt_.max_valence, p.ring));
+    if (!p.usable) return;
+    double chord = 0, cost = 0;
+    Evaluation e = evaluate_plane(p.v, p.ring, &chord);
+    if (!std::isfinite(e.factor)) {
+      p.usable = false;
+      return;
+    }
+    // The plan is made again: a diagonal may have become an edge since v was queued. Only a
+    // stale price is made again.
+    p.why = plan(p.v, p.ring, e, p.patch, cost, /*check_topology=*/true, p.stale && local);
+    p.priority = local ? std::max(cost, chord) : e.factor;
+  });
+}
+
+} // namespace vrs

@@ -1,0 +1,60 @@
+// Batches: removals read together off the queue's front, planned on the workers against the
+// mesh as it is, then taken in queue order as if popped alone. A plan holds only while no
+// removal committed before it in the batch touched a vertex in or next to its own.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <cstdint>
+#include <utility>
+#include <vector>
+
+#include "topology.h"
+#include "triangulation.h"
+#include "vertex_flags.h"
+
+namespace vrs {
+
+// Removals planned together. A constant, not the thread count: the output must not depend on
+// it.
+constexpr size_t kBatch = 128;
+
+// One removal read off the queue's front and planned (on the workers).
+struct Planned {
+  std::array<std::pair<uint32_t, uint32_t>, 3 * kMaxRing> overflow; // (vertex, face) to add
+  int overflows = 0;
+  uint32_t v;
+  int from; // the interval it was read off
+  bool stale, usable;
+  Reject why;
+  double priority;
+  Ring ring;
+  Patch patch;
+};
+
+// Reads up to `batch.size()` vertices off the front of the queue's lowest interval. From the
+// lowest interval only: reaching 16 intervals up filled the batches but cost 2 % of mean and
+// 8 % of max error on the whole data set.
+template <class Queue> size_t take_front(const Queue& queue, std::vector<Planned>& batch) {
+  size_t count = 0;
+  for (uint32_t v = queue.front(); v != kNone && count < batch.size(); v = queue.after(v)) {
+    batch[count].v = v;
+    batch[count++].from = queue.interval(v);
+  }
+  return count;
+}
+
+// The vertices the removals committed so far in a batch touched (each one's closed
+// neighbourhood), as kFlagTaken in the driver's flags.
+class TakenMarks {
+ public:
+  // Whether a plan made before the batch's commits still holds: no mark on v nor its ring.
+  bool holds(const std::vector<uint8_t>& flags, uint32_t v, const Ring& ring) const;
+  void mark(std::vector<uint8_t>& flags, uint32_t v, const Ring& ring);
+  void clear(std::vector<uint8_t>& flags); // for the next batch
+
+ private:
+  std::vector<uint32_t> marked_;
+};
+
+} // namespace vrs

@@ -1,0 +1,156 @@
+// Read and classify: degenerate faces out, spatial order, locks, topology, orientation,
+// constraints, normals, then every vertex's kind and first price.
+#include <limits>
+
+#include "local_error.h"
+#include "orientation.h"
+#include "simplifier.h"
+
+namespace vrs {
+
+namespace {
+
+size_t drop_repeated_corner_faces(std::vector<uint32_t>& tris, std::vector<uint32_t>& source) {
+  size_t out = 0;
+  source.clear();
+  source.reserve(tris.size() / 3);
+  for (size_t i = 0; i < tris.size(); i += 3) {
+    uint32_t a = tris[i], b = tris[i + 1], c = tris[i + 2];
+    if (a == b || b == c || c == a) continue;
+    source.push_back(static_cast<uint32_t>(i / 3));
+    tris[out++] = a;
+    tris[out++] = b;
+    tris[out++] = c;
+  }
+  size_t dropped = (tris.size() - out) / 3;
+  tris.resize(out);
+  return dropped;
+}
+
+} // namespace
+
+void Simplifier::prepare() {
+  const size_t n = mesh_.vertex_count();
+  rep_.dropped_degenerate_faces = drop_repeated_corner_faces(mesh_.triangles, face_source_);
+  // Inside, vertices and faces go in spatial order (compact() restores the input's).
+  order_ = spatial_order(mesh_.positions, mesh_.triangles);
+  {
+    std::vector<uint32_t> source(face_source_.size());
+    for (size_t f = 0; f < source.size(); ++f)
+      source[f] = face_source_[order_.face_old[f]];
+    face_source_.swap(source);
+  }
+  flags_.assign(n, 0);
+  for (uint32_t v = 0; v < n; ++v)
+    set_refused(v, RejectCount);
+  if (opt_.locked)
+    for (size_t v = 0; v < n; ++v)
+      if ((*opt_.locked)[order_.vertex_old[v]]) flags_[v] |= kFlagLocked;
+  // A NaN/inf position poisons every plane it takes part in: lock it and its neighbours.
+  const auto& t = mesh_.triangles;
+  for (size_t v = 0; v < n; ++v)
+    if (!is_finite(eval_.position(static_cast<uint32_t>(v)))) ++rep_.nonfinite_vertices;
+  if (rep_.nonfinite_vertices)
+    for (size_t i = 0; i < t.size(); i += 3)
+      if (!is_finite(eval_.position(t[i])) || !is_finite(eval_.position(t[i + 1])) ||
+          !is_finite(eval_.position(t[i + 2])))
+        flags_[t[i]] |= kFlagLocked, flags_[t[i + 1]] |= kFlagLocked,
+            flags_[t[i + 2]] |= kFlagLocked;
+
+  topo_.build(t, n);
+  // Before anything reads a fan: faces written in random orientation make every vertex look
+  // non-manifold.
+  std::vector<uint8_t> reversed;
+  rep_.reoriented_faces = orient_coherently(mesh_.triangles, topo_, face_source_.data(), reversed);
+  {
+    Options renumbered = opt_;
+    std::vector<uint32_t> pairs;
+    if (opt_.constrained_edges) {
+      pairs = *opt_.constrained_edges;
+      for (uint32_t& v : pairs)
+        if (v < n) v = order_.vertex_new[v]; // out-of-range pairs stay ignored
+      renumbered.constrained_edges = &pairs;
+    }
+    rep_.constrained_edges = constraints_.build(renumbered, mesh_.positions.data(), t, topo_, n);
+  }
+  if (opt_.corner_sources) {
+    corner_source_.resize(t.size());
+    for (size_t f = 0; f < face_source_.size(); ++f)
+      for (int c = 0; c < 3; ++c)
+        corner_source_[3 * f + c] =
+            3 * face_source_[f] + (reversed.empty() || !reversed[f] || !c ? c : 3 - c);
+  }
+  normals_ = vertex_normals(mesh_.positions, t);
+  reference_area_ = mean_triangle_area(mesh_.positions.data(), t);
+  if (lazy_) {
+    fan_area_.assign(n, 0.0f);
+    for (size_t i = 0; i < t.size(); i += 3) {
+      const float a = static_cast<float>(
+          triangle_area(eval_.position(t[i]), eval_.position(t[i + 1]), eval_.position(t[i + 2])));
+      for (int c = 0; c < 3; ++c)
+        fan_area_[t[i + c]] += a;
+    }
+  }
+  planner_ =
+      Planner(eval_, topo_, t.data(), normals_.data(), limits_, Pricer{&estimate, &price, this},
+              opt_.fill == Fill::Best, opt_.mode != Mode::Surface3D);
+  if (opt_.max_error > 0) {
+    face_bound_.assign(t.size() / 3, 0.0f); // the input is its own surface
+    limits_.max_error = opt_.max_error;
+    planner_.set_face_bounds(face_bound_.data());
+  }
+  factor_.assign(n, std::numeric_limits<float>::infinity());
+  faces_ = faces0_ = t.size() / 3;
+  // Every vertex's kind and first price, on the workers (reads only; each writes its own
+  // slots), then the counts in vertex order.
+  constexpr uint8_t kKeptOnConstraints = 128; // beside the VertexKind
+  std::vector<uint8_t> kinds(n);
+  std::vector<Priced> first(n);
+  workers_.for_each(
+      n,
+      [&](size_t i) {
+        const uint32_t v = static_cast<uint32_t>(i);
+        Ring ring;
+        VertexKind kind = topo_.ring(v, t.data(), opt_.max_valence, ring);
+        kinds[v] = static_cast<uint8_t>(kind);
+        if (kind == VertexKind::Isolated || flags_[v] & kFlagLocked || !removable(kind)) return;
+        std::array<int, 2> seam;
+        if (along(v, ring, seam) == Along::Kept)
+          kinds[v] |= kKeptOnConstraints;
+        else
+          first[v] = evaluate(v, ring);
+      },
+      256);
+  for (uint32_t v = 0; v < n; ++v) {
+    const VertexKind kind = static_cast<VertexKind>(kinds[v] & ~kKeptOnConstraints);
+    switch (kind) {
+    case VertexKind::Isolated: ++rep_.unreferenced_vertices; continue;
+    case VertexKind::Boundary:
+    case VertexKind::Corner: rep_.kept_boundary += !removable(kind); break;
+    case VertexKind::NonManifold: ++rep_.kept_nonmanifold; break;
+    case VertexKind::HighValence: ++rep_.kept_high_valence; break;
+    case VertexKind::Interior: break;
+    }
+    ++vertices_;
+    if (flags_[v] & kFlagLocked) {
+      ++rep_.kept_locked;
+      continue;
+    }
+    if (!removable(kind)) continue;
+    if (kinds[v] & kKeptOnConstraints) {
+      ++rep_.kept_constrained;
+      continue;
+    }
+    note(v, first[v]);
+    factor_[v] = static_cast<float>(first[v].priority);
+  }
+
+  const TargetKind tk = opt_.target.kind;
+  target_faces_ = tk == TargetKind::Faces ? opt_.target.faces
+                  : tk == TargetKind::Ratio
+                      ? static_cast<size_t>(std::llround(opt_.target.ratio * faces0_))
+                      : 0;
+  target_vertices_ = tk == TargetKind::Vertices ? opt_.target.vertices : 0;
+}
+
+} // namespace vrs

@@ -1,0 +1,135 @@
+// The driver's state and its steps. The steps live in their own files, in the order data flows:
+// setup.cpp (read, classify, first prices) -> pricing.cpp (a vertex's plan and price) ->
+// scheduler.cpp (batches read off the queue, planned on the workers, checked) ->
+// commit.cpp (faces rewritten) -> accounting.cpp (counts, neighbours re-priced) ->
+// last_resort.cpp -> stop_explanation.cpp / output.cpp; simplifier.cpp sequences them.
+#pragma once
+
+#include <array>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "constraints.h"
+#include "evaluation.h"
+#include "removal.h"
+#include "scheduler.h"
+#include "spatial_order.h"
+#include "topology.h"
+#include "vertex_flags.h"
+#include "vrs/simplify.h"
+#include "workers.h"
+
+namespace vrs {
+
+class Simplifier {
+ public:
+  Simplifier(Mesh& mesh, const Options& opt, Report& rep)
+      : mesh_(mesh), opt_(opt), rep_(rep),
+        eval_(opt.mode,
+              opt.mode == Mode::Planar2D ? mesh_plane_normal(mesh.positions.data(), mesh.triangles)
+                                         : Vec3{0, 0, 1},
+              mesh.positions.data()) {
+    limits_.min_normal_cos = std::cos(opt.max_normal_angle_deg * 3.14159265358979323846 / 180);
+  }
+  Simplifier(const Simplifier&) = delete;
+
+  void prepare();                                // setup.cpp
+  template <class Queue> void run(Queue& queue); // simplifier.cpp
+  void compact();                                // output.cpp
+  // Why the remaining vertices stay, when the target was not met (Report::stop_detail).
+  std::string explain_stop() const; // stop_explanation.cpp
+
+ private:
+  // A vertex of a single triangle goes with it only in the last-resort pass: that cuts a
+  // triangle off the outline.
+  bool removable(VertexKind k) const {
+    return k == VertexKind::Interior ||
+           (opt_.simplify_boundary &&
+            (k == VertexKind::Boundary || (k == VertexKind::Corner && last_resort_)));
+  }
+  bool target_met() const;
+  float progress_fraction(size_t queued, size_t queued0) const;
+
+  // --- pricing.cpp
+  // What the constrained edges allow for a removable vertex: no constraint, a seam through it
+  // (its ring positions in `seam`), or nothing (kept).
+  enum class Along : uint8_t { Free, Seam, Kept };
+  Along along(uint32_t v, const Ring& ring, std::array<int, 2>& seam) const;
+  // The evaluation of v's plane and factor; along a seam the factor also counts v's distance
+  // to the chord that replaces it (also put in `chord`, else 0). +inf factor when v must stay.
+  Evaluation evaluate_plane(uint32_t v, const Ring& ring, double* chord = nullptr) const;
+  // Priority of v with its current ring (the paper's factor or the planned patch's local
+  // error), or +inf when v must stay. Reads only (the workers call it); the planned removal's
+  // refusal, if a plan was made, goes to `why` (RejectCount: accepted or not planned) and is
+  // recorded by note().
+  struct Priced {
+    double priority;
+    Reject why = RejectCount;
+    bool planned = false;
+  };
+  Priced evaluate(uint32_t v, const Ring& ring) const;
+  void note(uint32_t v, const Priced& p);
+  // Plans v's removal on its evaluated plane, then on a fallback direction; RejectCount = ok,
+  // with the chosen patch's local error in `cost`.
+  Reject plan(uint32_t v, const Ring& ring, const Evaluation& e, Patch& patch, double& cost,
+              bool check_topology = true, bool price = true) const;
+  static double price(const void* self, uint32_t v, const Ring& ring, const Patch& patch);
+  static double estimate(const void* self, uint32_t v, const Ring& ring, const Patch& patch);
+
+  // --- scheduler.cpp
+  // Plans batch_[0, count) on the workers against today's mesh.
+  void plan_batch(size_t count);
+
+  // --- commit.cpp, accounting.cpp
+  // A removal is committed in two steps: account() on the caller's thread, in queue order
+  // (counts, seams, the neighbours' prices: marked stale or put on `reprice_`), then
+  // rewrite() of the faces and their lists, on the workers: the removals of a batch touch
+  // disjoint vertices.
+  template <class Queue> void account(uint32_t v, const Ring& ring, const Patch& patch, Queue& q);
+  void rewrite(Planned& p);
+  // Prices the vertices on `reprice_` (on the workers) and queues them again.
+  template <class Queue> void reprice(Queue& queue);
+
+  // --- last_resort.cpp
+  // The last resort when a count target is not met and nothing is left to remove: lifts the
+  // input-normal veto and the outline-corner rule (with boundary simplification on) and
+  // queues every removable vertex again. False if it was done already.
+  template <class Queue> bool relax(Queue& queue);
+
+  Mesh& mesh_;
+  const Options& opt_;
+  Report& rep_;
+  Evaluator eval_;
+  RemovalLimits limits_;
+  bool last_resort_ = false; // see relax()
+  // Queued neighbours of a removal are re-priced when popped. The paper's factor is the plane
+  // alone, cheap to make at once: lazy only pays where the price is a plan.
+  const bool lazy_ = opt_.lazy_reevaluation && opt_.priority == Priority::LocalError;
+  Topology topo_;
+  Workers workers_{opt_.threads > 0 ? opt_.threads : hardware_threads()};
+  std::vector<Planned> batch_;
+  TakenMarks taken_;
+  std::vector<uint32_t> reprice_;
+  std::vector<uint32_t> committed_; // batch_ entries accounted, to rewrite
+  std::vector<Priced> repriced_;
+  Planner planner_{eval_, topo_, mesh_.triangles.data(), nullptr, limits_, {}, false};
+  std::vector<float> factor_;
+  std::vector<float> fan_area_; // area of each vertex's faces (kept up to date with lazy_)
+  std::vector<float> normals_;  // unit vertex normals of the input surface, 3 a vertex
+  std::vector<uint8_t> flags_;  // vertex_flags.h
+  void set_refused(uint32_t v, Reject why) {
+    flags_[v] = uint8_t((flags_[v] & ~kRefusedMask) | (why << kRefusedShift));
+  }
+  Reject refused(uint32_t v) const { return Reject((flags_[v] & kRefusedMask) >> kRefusedShift); }
+  std::vector<uint32_t> face_source_;   // per face slot: its input face, or kRemoved once rewritten
+  std::vector<uint32_t> corner_source_; // per face slot corner: the input corner it carries
+  std::vector<float> face_bound_;       // per face slot: its certified error bound (max_error)
+  Constraints constraints_;
+  SpatialOrder order_;
+  size_t faces_ = 0, vertices_ = 0, target_faces_ = 0, target_vertices_ = 0;
+  size_t faces0_ = 0;
+  double reference_area_ = 1; // mean input triangle area (LocalError's weight)
+};
+
+} // namespace vrs

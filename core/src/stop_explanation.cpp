@@ -1,0 +1,64 @@
+#include "stop_explanation.h"
+
+#include "simplifier.h"
+
+namespace vrs {
+
+std::string explain_remaining(const Remaining& r, bool simplify_boundary, bool last_resort) {
+  std::string out;
+  auto add = [&](size_t count, const std::string& what) {
+    if (!count) return;
+    out += (out.empty() ? "" : "; ") + std::to_string(count) + " " + what;
+  };
+  add(r.boundary, simplify_boundary ? "on the boundary in a single triangle"
+                                    : "on the boundary, kept (boundary simplification is off)");
+  add(r.corners, "at corners of the outline");
+  add(r.constrained, "on seams or creases where they end, meet or cross");
+  add(r.locked, "locked");
+  add(r.nonmanifold, "non-manifold or inconsistently oriented");
+  add(r.high_valence, "of too high valence");
+  std::string vetoes;
+  for (int i = 0; i < RejectCount; ++i)
+    if (r.refused[i])
+      vetoes += (vetoes.empty() ? "" : ", ") + std::string(reject_name(Reject(i))) + " " +
+                std::to_string(r.refused[i]);
+  size_t total_refused = 0;
+  for (size_t n : r.refused)
+    total_refused += n;
+  add(total_refused, "refused by the vetoes (" + vetoes + ")");
+  if (last_resort && r.refused[RejectFoldOver])
+    out += "; the last resort stopped: every filling left for " +
+           std::to_string(r.refused[RejectFoldOver]) +
+           " of them would fold the surface over the faces it replaces";
+  add(r.untried, "without a usable plane (degenerate or non-finite neighbourhood)");
+  return "remaining vertices: " + (out.empty() ? std::string("none") : out);
+}
+
+std::string Simplifier::explain_stop() const {
+  Remaining r;
+  Ring ring;
+  std::array<int, 2> seam;
+  for (uint32_t v = 0; v < mesh_.vertex_count(); ++v) {
+    if (flags_[v] & kFlagRemoved || topo_.valence(v) == 0) continue;
+    VertexKind kind = topo_.ring(v, mesh_.triangles.data(), opt_.max_valence, ring);
+    if (flags_[v] & kFlagLocked)
+      ++r.locked;
+    else if (kind == VertexKind::NonManifold)
+      ++r.nonmanifold;
+    else if (kind == VertexKind::HighValence)
+      ++r.high_valence;
+    else if (!removable(kind))
+      ++r.boundary;
+    else if (along(v, ring, seam) == Along::Kept)
+      ++r.constrained;
+    else if (refused(v) != RejectCount)
+      ++r.refused[refused(v)];
+    else if (kind == VertexKind::Boundary)
+      ++r.corners;
+    else
+      ++r.untried;
+  }
+  return explain_remaining(r, opt_.simplify_boundary, last_resort_);
+}
+
+} // namespace vrs

@@ -1,0 +1,29 @@
+// Why vertices remain when a run stops short of its target (Report::stop_detail), in words.
+#pragma once
+
+#include <array>
+#include <cstddef>
+#include <string>
+
+#include "vrs/simplify.h"
+
+namespace vrs {
+
+// The remaining vertices by the first reason that keeps each.
+struct Remaining {
+  size_t boundary = 0;     // on the boundary and not removable there
+  size_t corners = 0;      // removable boundary vertices never planned (outline corners)
+  size_t constrained = 0;  // where seams or creases end, meet or cross
+  size_t locked = 0;       // by the user, or next to a non-finite position
+  size_t nonmanifold = 0;  // non-manifold or inconsistently oriented
+  size_t high_valence = 0; // more neighbours than the cap
+  size_t untried = 0;      // no usable plane
+  std::array<size_t, RejectCount> refused{}; // by the veto that refused their last plan
+};
+
+// "remaining vertices: 12 on the boundary, ...; 3 refused by the vetoes (fold 2, flip 1)".
+// `last_resort`: the run went through it (then fold-over refusals are said to be what stopped
+// it).
+std::string explain_remaining(const Remaining& r, bool simplify_boundary, bool last_resort);
+
+} // namespace vrs

@@ -1,0 +1,44 @@
+// The words of Report::stop_detail, from the counts of the remaining vertices.
+#include <gtest/gtest.h>
+
+#include "stop_explanation.h"
+
+using namespace vrs;
+
+TEST(StopExplanation, NothingLeftToSayIsNone) {
+  EXPECT_EQ(explain_remaining(Remaining{}, false, false), "remaining vertices: none");
+}
+
+TEST(StopExplanation, EachCauseIsCountedOnceInItsOrderAndVetoesByName) {
+  Remaining r;
+  r.boundary = 12;
+  r.locked = 2;
+  r.refused[RejectFold] = 3;
+  r.refused[RejectFlip] = 1;
+  r.untried = 4;
+  const std::string s = explain_remaining(r, false, false);
+  EXPECT_EQ(s, "remaining vertices: 12 on the boundary, kept (boundary simplification is off); "
+               "2 locked; 4 refused by the vetoes (" +
+                   std::string(reject_name(RejectFold)) + " 3, " + reject_name(RejectFlip) +
+                   " 1); 4 without a usable plane (degenerate or non-finite neighbourhood)");
+}
+
+TEST(StopExplanation, BoundaryWordsFollowTheBoundarySetting) {
+  Remaining r;
+  r.boundary = 5;
+  r.corners = 2;
+  const std::string s = explain_remaining(r, true, false);
+  EXPECT_NE(s.find("5 on the boundary in a single triangle"), std::string::npos) << s;
+  EXPECT_NE(s.find("2 at corners of the outline"), std::string::npos) << s;
+  EXPECT_EQ(s.find("boundary simplification is off"), std::string::npos) << s;
+}
+
+TEST(StopExplanation, TheLastResortSaysFoldOversStoppedItOnlyWhenItRan) {
+  Remaining r;
+  r.refused[RejectFoldOver] = 7;
+  const std::string said = explain_remaining(r, false, true);
+  EXPECT_NE(said.find("the last resort stopped: every filling left for 7 of them would fold"),
+            std::string::npos)
+      << said;
+  EXPECT_EQ(explain_remaining(r, false, false).find("last resort"), std::string::npos);
+}
