@@ -7,7 +7,7 @@
 namespace vrs {
 
 void Constraints::add(uint32_t a, uint32_t b) {
-  if (a == b || !edges_.insert(key(a, b)).second) return;
+  if (a == b || !edges_.insert(a, b)) return;
   if (degree_[a] < 255) ++degree_[a];
   if (degree_[b] < 255) ++degree_[b];
 }
@@ -56,11 +56,11 @@ bool Constraints::seam_of(uint32_t v, const Ring& ring, int& i, int& j) const {
 }
 
 void Constraints::merge(uint32_t v, uint32_t a, uint32_t b) {
-  edges_.erase(key(v, a));
-  edges_.erase(key(v, b));
+  edges_.erase(v, a);
+  edges_.erase(v, b);
   degree_[v] = 0;
   // a and b each lose (v, x) and gain (a, b), unless (a, b) was constrained already.
-  if (!edges_.insert(key(a, b)).second) {
+  if (!edges_.insert(a, b)) {
     if (degree_[a] < 255) --degree_[a];
     if (degree_[b] < 255) --degree_[b];
   }

@@ -4,9 +4,9 @@
 #pragma once
 
 #include <cstdint>
-#include <unordered_set>
 #include <vector>
 
+#include "flat_edge_set.h"
 #include "topology.h"
 #include "vrs/simplify.h"
 
@@ -21,7 +21,7 @@ class Constraints {
 
   // Number of constrained edges at v (saturates at 255).
   int degree(uint32_t v) const { return degree_.empty() ? 0 : degree_[v]; }
-  bool has(uint32_t a, uint32_t b) const { return edges_.count(key(a, b)) != 0; }
+  bool has(uint32_t a, uint32_t b) const { return edges_.contains(a, b); }
 
   // For a vertex on exactly two constrained edges: their ring positions (i < j). False when
   // they are not both on v's closed ring.
@@ -31,13 +31,10 @@ class Constraints {
   void merge(uint32_t v, uint32_t a, uint32_t b);
 
  private:
-  static uint64_t key(uint32_t a, uint32_t b) {
-    return a < b ? (uint64_t(a) << 32 | b) : (uint64_t(b) << 32 | a);
-  }
   void add(uint32_t a, uint32_t b);
 
   std::vector<uint8_t> degree_;
-  std::unordered_set<uint64_t> edges_;
+  FlatEdgeSet edges_;
 };
 
 } // namespace vrs
