@@ -29,8 +29,10 @@ void fan_area_changes(Vec3 c, const Ring& ring, const Patch& patch,
   }
 }
 
-template <class Queue>
-void Simplifier::account(uint32_t v, const Ring& ring, const Patch& patch, Queue& queue) {
+template <class Queue> void Simplifier::account(const Planned& p, Queue& queue) {
+  const uint32_t v = p.v;
+  const Ring& ring = p.ring;
+  const Patch& patch = p.patch;
   std::array<int, 2> seam;
   if (along(v, ring, seam) == Along::Seam) constraints_.merge(v, ring.v[seam[0]], ring.v[seam[1]]);
   flags_[v] |= kFlagRemoved;
@@ -43,8 +45,7 @@ void Simplifier::account(uint32_t v, const Ring& ring, const Patch& patch, Queue
   // The neighbours' planes and rings changed. Queued ones are priced again when popped (lazy);
   // the others (refused, or kept until now) are evaluated now and appended to the back of
   // their interval, as every neighbour is with eager re-evaluation.
-  std::array<double, kMaxRing + 1> area_change;
-  if (lazy_) fan_area_changes(eval_.position(v), ring, patch, area_change);
+  const auto& area_change = p.area_change; // made on the workers with the plan
   for (int i = 0; i < ring.verts; ++i) {
     const uint32_t u = ring.v[i];
     const float before = lazy_ ? fan_area_[u] : 0.0f;
@@ -93,8 +94,8 @@ template <class Queue> void Simplifier::reprice(Queue& queue) {
   reprice_.clear();
 }
 
-template void Simplifier::account(uint32_t, const Ring&, const Patch&, BucketQueue&);
-template void Simplifier::account(uint32_t, const Ring&, const Patch&, HeapQueue&);
+template void Simplifier::account(const Planned&, BucketQueue&);
+template void Simplifier::account(const Planned&, HeapQueue&);
 template void Simplifier::reprice(BucketQueue&);
 template void Simplifier::reprice(HeapQueue&);
 

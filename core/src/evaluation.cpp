@@ -75,7 +75,7 @@ Evaluation Evaluator::evaluate(uint32_t v, const Ring& ring, bool boundary_line)
   const int k = ring.verts;
   if (k < 2) return e;
   Vec3 c = position(v);
-  std::array<Vec3, kMaxRing + 1> p;
+  UnsetArray<Vec3, kMaxRing + 1> p;
   for (int i = 0; i < k; ++i)
     p[i] = position(ring.v[i]);
 

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cmath>
+#include <cstddef>
 
 namespace vrs {
 
@@ -43,6 +44,23 @@ inline Vec3 normalized(Vec3 a) {
 
 struct Vec2 {
   double x = 0, y = 0;
+};
+
+// A fixed array of vectors that starts unset (a Vec3 or Vec2 alone zeroes itself): the ring
+// buffers hold kMaxRing + 1 entries and a plan writes a handful, and zeroing them all took
+// ~10 % of a run. Read only what was written.
+template <class T, size_t N> class UnsetArray {
+ public:
+  UnsetArray() {} // the union's member is left unconstructed
+  T& operator[](size_t i) { return v_[i]; }
+  const T& operator[](size_t i) const { return v_[i]; }
+  T* data() { return v_; }
+  const T* data() const { return v_; }
+
+ private:
+  union {
+    T v_[N];
+  };
 };
 
 // Twice the signed area of (a, b, c): > 0 when counter-clockwise.

@@ -34,7 +34,7 @@ class OldFan {
   const Patch& patch_;
   Vec3 c_;
   double area_ = 0;
-  std::array<Vec3, kMaxRing> n_; // unit normals: the plane distance skips most exact queries
+  UnsetArray<Vec3, kMaxRing> n_; // unit normals: the plane distance skips most exact queries
 };
 
 // Squared distance to the old fan of the new triangle (a, b, c) (ring positions): the largest

@@ -26,7 +26,7 @@ void project(uint32_t v, const Ring& ring, Vec3 n, const Evaluator& eval, Patch&
 bool star_direction(uint32_t v, const Ring& ring, const Evaluator& eval, Vec3& out) {
   const int k = ring.verts;
   const Vec3 c = eval.position(v);
-  std::array<Vec3, kMaxRing> n;
+  UnsetArray<Vec3, kMaxRing> n;
   Vec3 area, unit;
   for (int i = 0; i < ring.faces; ++i) {
     Vec3 a = cross(eval.position(ring.v[i]) - c, eval.position(ring.v[(i + 1) % k]) - c);

@@ -30,6 +30,9 @@ struct Planned {
   double priority;
   Ring ring;
   Patch patch;
+  // With lazy re-pricing, how the removal changes each ring vertex's fan area
+  // (fan_area_changes): made with the plan, on the workers, for the accounting.
+  std::array<double, kMaxRing + 1> area_change;
 };
 
 // Reads up to `batch.size()` vertices off the front of the queue's lowest interval. From the

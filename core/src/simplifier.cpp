@@ -123,7 +123,7 @@ template <class Queue> void Simplifier::run(Queue& queue) {
         }
       }
       taken_.mark(flags_, v, p.ring);
-      account(v, p.ring, p.patch, queue);
+      account(p, queue);
       committed_.push_back(uint32_t(b));
     }
     taken_.clear(flags_);

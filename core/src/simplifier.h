@@ -86,7 +86,7 @@ class Simplifier {
   // (counts, seams, the neighbours' prices: marked stale or put on `reprice_`), then
   // rewrite() of the faces and their lists, on the workers: the removals of a batch touch
   // disjoint vertices.
-  template <class Queue> void account(uint32_t v, const Ring& ring, const Patch& patch, Queue& q);
+  template <class Queue> void account(const Planned& p, Queue& q);
   void rewrite(Planned& p);
   // Prices the vertices on `reprice_` (on the workers) and queues them again.
   template <class Queue> void reprice(Queue& queue);

@@ -32,6 +32,14 @@ struct Ring {
   bool closed() const { return verts == faces; }
 };
 
+inline void prefetch(const void* p) {
+#if defined(__GNUC__)
+  __builtin_prefetch(p);
+#else
+  (void)p;
+#endif
+}
+
 class Topology {
  public:
   // `triangles` must hold valid indices with three distinct corners each; it is read, not kept.
@@ -54,6 +62,17 @@ class Topology {
   // Orders the fan of v; `tris` is the live triangle array. Rings longer than max_valence
   // (<= kMaxRing) are not built and the vertex is reported HighValence.
   VertexKind ring(uint32_t v, const uint32_t* tris, int max_valence, Ring& out) const;
+
+  // Memory hints for a vertex about to be planned: its list's place, then its faces.
+  void prefetch_list(uint32_t v) const {
+    prefetch(&first_[v]);
+    prefetch(&count_[v]);
+  }
+  void prefetch_faces(uint32_t v, const uint32_t* tris) const {
+    const uint32_t* s = faces_of(v);
+    for (uint32_t i = 0; i < count_[v]; ++i)
+      prefetch(tris + 3 * s[i]);
+  }
 
   bool has_edge(uint32_t a, uint32_t b, const uint32_t* tris) const;
   int edge_faces(uint32_t a, uint32_t b, const uint32_t* tris) const; // faces holding edge (a, b)

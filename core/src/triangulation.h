@@ -20,8 +20,8 @@ struct Patch {
   // it was projected along with its plane basis (u, w), the ring's 3D positions and their
   // projections relative to the removed vertex.
   Vec3 normal, u, w;
-  std::array<Vec3, kMaxRing + 1> q;
-  std::array<Vec2, kMaxRing + 1> p;
+  UnsetArray<Vec3, kMaxRing + 1> q;
+  UnsetArray<Vec2, kMaxRing + 1> p;
   // With an error bound tracked (error_bound.h): each new triangle's certified bound.
   std::array<float, kMaxRing> bound;
 };

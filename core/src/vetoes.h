@@ -44,7 +44,7 @@ Reject veto_topology(const Ring& ring, const Patch& patch, OpenRing open, const 
 // steeper than limits.min_normal_cos to that plane.
 // `replaced`: the unit normals of the ring's faces (replaced_face_normals), the same for every
 // candidate of one plan, so made once.
-using FaceNormals = std::array<Vec3, kMaxRing>;
+using FaceNormals = UnsetArray<Vec3, kMaxRing>;
 void replaced_face_normals(uint32_t v, const Ring& ring, const Patch& patch, const Evaluator& eval,
                            FaceNormals& out);
 Reject veto_shape(const Ring& ring, const Patch& patch, const FaceNormals& replaced,
