@@ -4,24 +4,17 @@ namespace vrs {
 
 void BucketQueue::init(size_t vertex_count, const IntervalMap& map) {
   map_ = map;
-  next_.assign(vertex_count, kNone);
-  prev_.assign(vertex_count, kNone);
-  where_.assign(vertex_count, kNone);
-  head_.assign(map.n, kNone);
-  tail_.assign(map.n, kNone);
+  node_.assign(vertex_count, Node{});
+  lists_.assign(map.n, List{});
   nonempty_.assign((map.n + 63) / 64, 0);
   size_ = 0;
 }
 
 void BucketQueue::link_back(uint32_t v, int interval) {
-  prev_[v] = tail_[interval];
-  next_[v] = kNone;
-  if (tail_[interval] != kNone)
-    next_[tail_[interval]] = v;
-  else
-    head_[interval] = v;
-  tail_[interval] = v;
-  where_[v] = static_cast<uint32_t>(interval);
+  List& l = lists_[interval];
+  node_[v] = {uint32_t(interval), uint32_t(l.entries.size())};
+  l.entries.push_back(v);
+  ++l.live;
   nonempty_[interval >> 6] |= uint64_t(1) << (interval & 63);
   ++size_;
 }
@@ -32,19 +25,43 @@ void BucketQueue::push(uint32_t v, double factor) {
 }
 
 void BucketQueue::erase(uint32_t v) {
-  uint32_t i = where_[v];
+  const uint32_t i = node_[v].where;
   if (i == kNone) return;
-  if (prev_[v] != kNone)
-    next_[prev_[v]] = next_[v];
-  else
-    head_[i] = next_[v];
-  if (next_[v] != kNone)
-    prev_[next_[v]] = prev_[v];
-  else
-    tail_[i] = prev_[v];
-  if (head_[i] == kNone) nonempty_[i >> 6] &= ~(uint64_t(1) << (i & 63));
-  where_[v] = next_[v] = prev_[v] = kNone;
+  List& l = lists_[i];
+  l.entries[node_[v].slot] = kNone;
+  node_[v] = Node{};
   --size_;
+  if (--l.live == 0) {
+    l.entries.clear(); // the capacity stays: no allocation in the steady state
+    l.head = 0;
+    nonempty_[i >> 6] &= ~(uint64_t(1) << (i & 63));
+    return;
+  }
+  while (l.entries[l.head] == kNone) // the head stays on a vertex
+    ++l.head;
+  // Amortized O(1) an erase: blanks are swept once they fill half the list.
+  if (l.entries.size() > 2 * size_t(l.live) + 64) compact(l);
+}
+
+void BucketQueue::compact(List& l) {
+  uint32_t out = 0;
+  for (uint32_t i = l.head; i < l.entries.size(); ++i)
+    if (l.entries[i] != kNone) {
+      node_[l.entries[i]].slot = out;
+      l.entries[out++] = l.entries[i];
+    }
+  l.entries.resize(out);
+  l.head = 0;
+}
+
+size_t BucketQueue::read_front(uint32_t* out, size_t max) const {
+  const int i = lowest();
+  if (i < 0) return 0;
+  const List& l = lists_[i];
+  size_t count = 0;
+  for (uint32_t j = l.head; j < l.entries.size() && count < max; ++j)
+    if (l.entries[j] != kNone) out[count++] = l.entries[j];
+  return count;
 }
 
 int BucketQueue::lowest() const {
@@ -54,8 +71,8 @@ int BucketQueue::lowest() const {
 }
 
 uint32_t BucketQueue::front() const {
-  int i = lowest();
-  return i < 0 ? kNone : head_[i];
+  const int i = lowest();
+  return i < 0 ? kNone : lists_[i].entries[lists_[i].head];
 }
 
 void BucketQueue::respread(const float* factor) {
@@ -63,11 +80,12 @@ void BucketQueue::respread(const float* factor) {
   std::vector<uint32_t> order;
   order.reserve(size_);
   double top = 0;
-  for (int i = 0; i < map_.n; ++i)
-    for (uint32_t v = head_[i]; v != kNone; v = next_[v]) {
-      order.push_back(v);
-      top = std::max(top, static_cast<double>(factor[v]));
-    }
+  for (const List& l : lists_)
+    for (uint32_t j = l.head; j < l.entries.size(); ++j)
+      if (l.entries[j] != kNone) {
+        order.push_back(l.entries[j]);
+        top = std::max(top, static_cast<double>(factor[l.entries[j]]));
+      }
   for (uint32_t v : order)
     erase(v);
   map_.f_max = top;

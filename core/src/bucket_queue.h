@@ -1,5 +1,8 @@
-// The paper's hash table: n intervals, each a FIFO list threaded through the vertices
-// (intrusive prev/next, so unlink and append are O(1) and nothing is allocated after init).
+// The paper's hash table: n intervals, each a FIFO list. A list is an array of vertices read
+// from its head and appended at its back; erasing a vertex blanks its entry (its node names
+// the slot), and a list is compacted when blanks outnumber its vertices. Reading a batch off
+// the front is then a walk along contiguous memory, not a chase through linked vertices
+// scattered over the mesh (a tenth of the serial time at 4.8 M faces).
 #pragma once
 
 #include <algorithm>
@@ -23,19 +26,20 @@ class BucketQueue {
   // it is when the interval is the same.
   void update(uint32_t v, double factor) {
     const int i = map_.interval_of(factor);
-    if (i != int(where_[v])) erase(v), link_back(v, i);
+    if (i != int(node_[v].where)) erase(v), link_back(v, i);
   }
-  bool contains(uint32_t v) const { return where_[v] != kNone; }
+  bool contains(uint32_t v) const { return node_[v].where != kNone; }
   size_t size() const { return size_; }
   bool empty() const { return size_ == 0; }
   bool only_last_left() const { return size_ > 0 && lowest() == map_.n - 1; }
 
   // First vertex of the lowest non-empty interval, or kNone. It stays queued until erased.
   uint32_t front() const;
-  // The vertex after v in its interval (kNone: v is its last): a batch is read off the front.
-  uint32_t after(uint32_t v) const { return next_[v]; }
+  void prefetch(uint32_t v) const { vrs::prefetch(&node_[v]); }
+  // A batch: up to `max` vertices of the lowest interval from its front, into `out`.
+  size_t read_front(uint32_t* out, size_t max) const;
   // Interval of a queued vertex.
-  int interval(uint32_t v) const { return int(where_[v]); }
+  int interval(uint32_t v) const { return int(node_[v].where); }
   // Whether a vertex of this factor, pushed now, would be in the lowest non-empty interval or
   // no later than `from` (the interval it was read off): a vertex popped with a stale priority
   // and priced again is removed at once when it still leads, else pushed back.
@@ -55,8 +59,18 @@ class BucketQueue {
   void link_back(uint32_t v, int interval);
 
   IntervalMap map_;
-  std::vector<uint32_t> next_, prev_, where_;
-  std::vector<uint32_t> head_, tail_;
+  struct Node {
+    uint32_t where = kNone; // its interval
+    uint32_t slot = kNone;  // its entry in that interval's list
+  };
+  struct List {
+    std::vector<uint32_t> entries; // vertices in the order appended; kNone: erased
+    uint32_t head = 0;             // the first vertex (entries before it are blank)
+    uint32_t live = 0;
+  };
+  void compact(List& l);
+  std::vector<Node> node_;
+  std::vector<List> lists_;
   std::vector<uint64_t> nonempty_; // bit i: interval i has vertices
   size_t size_ = 0;
 };

@@ -25,7 +25,12 @@ class HeapQueue {
   }
   uint32_t front() const { return heap_.empty() ? kNone : heap_[0].v; }
   // An exact order has no cheap "next": its batches hold the front alone.
-  uint32_t after(uint32_t) const { return kNone; }
+  void prefetch(uint32_t) const {}
+  size_t read_front(uint32_t* out, size_t max) const {
+    if (heap_.empty() || max == 0) return 0;
+    out[0] = heap_[0].v;
+    return 1;
+  }
   int interval(uint32_t) const { return -1; }
   bool leads(double factor, int) const { return heap_.empty() || factor <= heap_[0].factor; }
   void respread(const float*) {} // already exact

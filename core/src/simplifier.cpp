@@ -47,6 +47,7 @@ template <class Queue> void Simplifier::run(Queue& queue) {
     if (std::isfinite(factor_[v])) map.f_max = std::max(map.f_max, double(factor_[v]));
   queue.init(n, map);
   batch_.resize(kBatch);
+  batch_ids_.resize(kBatch);
   const bool by_factor = opt_.target.kind == TargetKind::MaxFactor;
   // In the input's order, as the paper fills its table: the FIFO of an interval then follows
   // the input, not space, and removals spread over the mesh.
@@ -98,8 +99,8 @@ template <class Queue> void Simplifier::run(Queue& queue) {
     // each in queue order as if popped alone: refused, pushed back (a stale price that no
     // longer leads) or committed. A plan holds only while no removal of the batch touched a
     // vertex in or next to its own: one that did is left at the front for the next batch.
-    const size_t count = take_front(queue, batch_);
-    plan_batch(count);
+    const size_t count = take_front(queue, batch_ids_, batch_from_);
+    plan_batch(count, queue);
     since_progress = since_progress >= 256 ? count : since_progress + count;
     for (size_t b = 0; b < count && !target_met(); ++b) {
       Planned& p = batch_[b];

@@ -78,8 +78,10 @@ class Simplifier {
   static double estimate(const void* self, uint32_t v, const Ring& ring, const Patch& patch);
 
   // --- scheduler.cpp
-  // Plans batch_[0, count) on the workers against today's mesh.
-  void plan_batch(size_t count);
+  // Plans batch_ids_[0, count) into batch_ on the workers against today's mesh.
+  // Each plan also asks for what the accounting will read (queue, flags, prices, areas of v and
+  // its ring): the serial walk that follows then finds it in the shared cache.
+  template <class Queue> void plan_batch(size_t count, const Queue& queue);
 
   // --- commit.cpp, accounting.cpp
   // A removal is committed in two steps: account() on the caller's thread, in queue order
@@ -109,6 +111,8 @@ class Simplifier {
   Topology topo_;
   Workers workers_{opt_.threads > 0 ? opt_.threads : hardware_threads()};
   std::vector<Planned> batch_;
+  std::vector<uint32_t> batch_ids_; // the vertices read off the queue for batch_
+  int batch_from_ = 0;              // the interval they were read off
   TakenMarks taken_;
   std::vector<uint32_t> reprice_;
   std::vector<uint32_t> committed_; // batch_ entries accounted, to rewrite

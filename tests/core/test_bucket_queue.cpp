@@ -106,6 +106,71 @@ TEST(BucketQueue, ManyIntervalsAcrossBitmapWords) {
   EXPECT_EQ(drain(q), (std::vector<uint32_t>{2, 1, 0}));
 }
 
+TEST(BucketQueue, MatchesFifoListsThroughChurnThatBlanksAndCompactsItsArrays) {
+  // A reference: one FIFO per interval. Few vertices and intervals, many pushes, moves and
+  // erases, so that blanks pile up at the heads and inside the lists and get swept.
+  std::mt19937 rng(11);
+  const int n = 40, intervals = 4;
+  BucketQueue q;
+  q.init(n, linear(intervals, 1.0));
+  std::vector<std::vector<uint32_t>> ref(intervals);
+  auto where = [&](uint32_t v) {
+    for (int i = 0; i < intervals; ++i)
+      if (std::find(ref[i].begin(), ref[i].end(), v) != ref[i].end()) return i;
+    return -1;
+  };
+  auto remove = [&](uint32_t v) {
+    const int i = where(v);
+    if (i >= 0) ref[i].erase(std::find(ref[i].begin(), ref[i].end(), v));
+  };
+  std::uniform_real_distribution<double> factor(0.0, 0.99);
+  for (int step = 0; step < 100000; ++step) {
+    const uint32_t v = rng() % n;
+    switch (rng() % 4) {
+    case 0: // push (to the back, also when queued)
+    case 1: {
+      const double f = factor(rng);
+      q.push(v, f);
+      remove(v);
+      ref[q.map().interval_of(f)].push_back(v);
+      break;
+    }
+    case 2:
+      q.erase(v);
+      remove(v);
+      break;
+    default: { // update: moves only when the interval changes
+      if (!q.contains(v)) break;
+      const double f = factor(rng);
+      q.update(v, f);
+      const int i = q.map().interval_of(f);
+      if (i != where(v)) remove(v), ref[i].push_back(v);
+    }
+    }
+    size_t total = 0;
+    for (const auto& l : ref)
+      total += l.size();
+    ASSERT_EQ(q.size(), total) << step;
+    ASSERT_EQ(q.contains(v), where(v) >= 0) << step;
+    if (where(v) >= 0) {
+      ASSERT_EQ(q.interval(v), where(v)) << step;
+    }
+    // The front batch is the lowest non-empty list, in order.
+    std::vector<uint32_t> front(n);
+    front.resize(q.read_front(front.data(), front.size()));
+    std::vector<uint32_t> expected;
+    for (const auto& l : ref)
+      if (!l.empty()) {
+        expected = l;
+        break;
+      }
+    ASSERT_EQ(front, expected) << step;
+    if (!expected.empty()) {
+      ASSERT_EQ(q.front(), expected[0]) << step;
+    }
+  }
+}
+
 TEST(HeapQueue, IsExactAndBreaksTiesByInsertionOrder) {
   HeapQueue q;
   q.init(1000, linear(4, 1.0));

@@ -28,14 +28,15 @@ TEST(Scheduler, ABatchIsTheFrontOfTheLowestIntervalInQueueOrderUpToItsSize) {
   for (uint32_t v : {7u, 3u, 11u}) // interval 0, in this order
     q.push(v, 0.01);
   q.push(5, 0.5); // a higher interval: not in the batch
-  std::vector<Planned> batch(2);
-  ASSERT_EQ(take_front(q, batch), 2u);
-  EXPECT_EQ(batch[0].v, 7u);
-  EXPECT_EQ(batch[1].v, 3u);
-  EXPECT_EQ(batch[0].from, 0);
-  batch.resize(kBatch);
-  ASSERT_EQ(take_front(q, batch), 3u);
-  EXPECT_EQ(batch[2].v, 11u);
+  std::vector<uint32_t> ids(2);
+  int from = -1;
+  ASSERT_EQ(take_front(q, ids, from), 2u);
+  EXPECT_EQ(ids[0], 7u);
+  EXPECT_EQ(ids[1], 3u);
+  EXPECT_EQ(from, 0);
+  ids.resize(kBatch);
+  ASSERT_EQ(take_front(q, ids, from), 3u);
+  EXPECT_EQ(ids[2], 11u);
   // Nothing is taken off the queue: the driver erases what it commits or refuses.
   EXPECT_TRUE(q.contains(7) && q.contains(3) && q.contains(11));
 }
