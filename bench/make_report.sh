@@ -112,11 +112,14 @@ echo
 for m in $(awk -F, 'NR > 1 && !seen[$1 "," $3]++ { n[$1]++ } END { for (m in n) if (n[m] > 1) print m }' "$csv" | sort); do
   echo "![$m](plots/error_$m.png)"
 done
-# The speed runs (scripts/bench_speed.sh), measured apart: medians of alternated runs.
-if [ -f "$out/SPEED.md" ]; then
-  echo
-  sed 's/^# /## /' "$out/SPEED.md"
-fi
+# The speed runs (scripts/bench_speed.sh), measured apart: medians of alternated runs; and
+# where their time goes (scripts/profile.sh). Their headings one level down.
+for part in SPEED PROFILE; do
+  if [ -f "$out/$part.md" ]; then
+    echo
+    sed 's/^#/##/' "$out/$part.md"
+  fi
+done
 } >"$report"
 
 # One plot per mesh run at several ratios: mean error against output faces, log-log.

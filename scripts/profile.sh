@@ -27,28 +27,29 @@ faces=$("$top/build/bin/vrs_bench" --info "$mesh" | cut -d' ' -f1)
 python3 - "$work/self.txt" "$work/graph.txt" "$top/bench/PROFILE.md" "$faces" <<'PY'
 import datetime, os, re, sys
 self_txt, graph_txt, out, faces = sys.argv[1:5]
-def rows(path):
+def rows(path):  # (percent, function name without arguments)
     for line in open(path):
         m = re.match(r"\s+([\d.]+)%\s+(?:([\d.]+)%\s+)?\[\.\]\s+(.*?)\s*$", line)
         if m:
-            yield float(m.group(1)), m.group(3)
-steps = [  # (label, symbol pattern): the driver's steps, then the planning's pieces
-    ("setup: classify and first prices (`Simplifier::prepare`)", r"^vrs::Simplifier::prepare\(\)$"),
-    ("planning the popped batches (`plan_batch`)", r"^vrs::Simplifier::plan_batch\(unsigned long\)$"),
-    ("faces rewritten (`rewrite`)", r"^vrs::Simplifier::rewrite"),
-    ("accounting (`account`, serial)", r"^vrs::Simplifier::account<"),
-    ("neighbours priced again (`reprice`)", r"^vrs::Simplifier::reprice<"),
-    ("a plan (`Planner::plan`)", r"^vrs::Planner::plan\("),
-    ("its exact price (`patch_error`)", r"^vrs::patch_error"),
-    ("its plane (`Evaluator::evaluate`)", r"^vrs::Evaluator::evaluate"),
-    ("the candidates made (`fill_candidate`)", r"^vrs::fill_candidate"),
-    ("the candidates ranked (`drop_height`)", r"^vrs::drop_height"),
-    ("topology vetoes (`veto_topology`)", r"^vrs::veto_topology"),
-    ("shape vetoes (`veto_shape`)", r"^vrs::veto_shape"),
-    ("rings read (`Topology::ring`)", r"^vrs::Topology::ring"),
+            sym = re.split(r"\s{2,}", m.group(3))[0]
+            yield float(m.group(1)), re.sub(r"\(.*", "", sym)
+steps = [  # (label, name prefix): the driver's steps, then the planning's pieces
+    ("setup: classify and first prices (`Simplifier::prepare`)", "vrs::Simplifier::prepare"),
+    ("planning the popped batches (`plan_batch`)", "vrs::Simplifier::plan_batch"),
+    ("faces rewritten (`rewrite`)", "vrs::Simplifier::rewrite"),
+    ("accounting (`account`, serial)", "vrs::Simplifier::account"),
+    ("neighbours priced again (`reprice`)", "vrs::Simplifier::reprice"),
+    ("a plan (`Planner::plan`)", "vrs::Planner::plan"),
+    ("its exact price (`patch_error`)", "vrs::patch_error"),
+    ("its plane (`Evaluator::evaluate`)", "vrs::Evaluator::evaluate"),
+    ("the candidates made (`fill_candidate`)", "vrs::fill_candidate"),
+    ("the candidates ranked (`drop_height`)", "vrs::drop_height"),
+    ("topology vetoes (`veto_topology`)", "vrs::veto_topology"),
+    ("shape vetoes (`veto_shape`)", "vrs::veto_shape"),
+    ("rings read (`Topology::ring`)", "vrs::Topology::ring"),
 ]
 graph = list(rows(graph_txt))
-total = next((p for p, s in graph if s == "vrs::simplify(vrs::Mesh&, vrs::Options const&)"), None)
+total = next((p for p, s in graph if s == "vrs::simplify"), None)
 lines = ["# Profile", "",
          f"{datetime.date.today()}, {os.cpu_count()} cores: `scripts/profile.sh` — Linux perf on "
          f"`vrsimplify` simplifying bunny00 Loop-subdivided ({faces} faces) to 10 % on one thread.",
@@ -56,12 +57,11 @@ lines = ["# Profile", "",
          "| step | % |", "|---|---|"]
 if total:
     lines[-3] = lines[-3].replace("included)", f"included; the simplify call is {total:.1f} %)")
-for label, pattern in steps:
-    pct = next((p for p, s in graph if re.search(pattern, s)), None)
-    lines.append(f"| {label} | {pct:.1f} |" if pct is not None else f"| {label} | — |")
+for label, prefix in steps:
+    pct = next((p for p, s in graph if s == prefix or s.startswith(prefix + "<")), None)
+    lines.append(f"| {label} | {pct:.1f} |" if pct is not None else f"| {label} | < 0.5 |")
 lines += ["", "## Own time (plain samples)", "", "| function | % |", "|---|---|"]
 for pct, sym in list(rows(self_txt))[:25]:
-    sym = re.sub(r"\(.*", "", sym)
     lines.append(f"| `{sym}` | {pct:.1f} |")
 open(out, "w").write("\n".join(lines) + "\n")
 PY

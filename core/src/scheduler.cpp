@@ -41,8 +41,14 @@ template <class Queue> void Simplifier::plan_batch(size_t count, const Queue& qu
     p.why = RejectCount;
     p.usable = removable(topo_.ring(p.v, mesh_.triangles.data(), opt_.max_valence, p.ring));
     if (!p.usable) return;
+    // The topology vetoes will read the ring vertices' faces: their lists now, their faces
+    // once the plane is made.
+    for (int i = 0; i < p.ring.verts; ++i)
+      topo_.prefetch_list(p.ring.v[i]);
     double chord = 0, cost = 0;
     Evaluation e = evaluate_plane(p.v, p.ring, &chord);
+    for (int i = 0; i < p.ring.verts; ++i)
+      topo_.prefetch_faces(p.ring.v[i], mesh_.triangles.data());
     if (!std::isfinite(e.factor)) {
       p.usable = false;
       return;
