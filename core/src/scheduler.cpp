@@ -43,8 +43,10 @@ template <class Queue> void Simplifier::plan_batch(size_t count, const Queue& qu
     if (!p.usable) return;
     // The topology vetoes will read the ring vertices' faces: their lists now, their faces
     // once the plane is made.
-    for (int i = 0; i < p.ring.verts; ++i)
+    for (int i = 0; i < p.ring.verts; ++i) {
       topo_.prefetch_list(p.ring.v[i]);
+      prefetch(&normals_[3 * size_t(p.ring.v[i])]);
+    }
     double chord = 0, cost = 0;
     Evaluation e = evaluate_plane(p.v, p.ring, &chord);
     for (int i = 0; i < p.ring.verts; ++i)
