@@ -30,7 +30,7 @@ int hardware_threads() {
   return std::max(1, int(std::thread::hardware_concurrency()));
 }
 
-Workers::Workers(int threads) {
+Workers::Workers(int threads) : poll_(threads <= hardware_threads()) {
   for (int t = 1; t < threads; ++t)
     pool_.emplace_back([this] { serve(); });
 }
@@ -60,7 +60,7 @@ void Workers::serve() {
     // Poll first, then sleep until the generation moves.
     const auto until = std::chrono::steady_clock::now() + kSpin;
     int polls = 0;
-    while (generation_.load(std::memory_order_acquire) == seen && !quit_.load() &&
+    while (poll_ && generation_.load(std::memory_order_acquire) == seen && !quit_.load() &&
            std::chrono::steady_clock::now() < until)
       relax_cpu(polls);
     if (generation_.load(std::memory_order_acquire) == seen) {
@@ -70,7 +70,10 @@ void Workers::serve() {
     if (quit_.load()) return;
     seen = generation_.load(std::memory_order_acquire);
     work();
-    busy_.fetch_sub(1, std::memory_order_acq_rel);
+    if (busy_.fetch_sub(1, std::memory_order_acq_rel) == 1 && !poll_) {
+      std::lock_guard<std::mutex> lock(mutex_); // the caller sleeps: wake it
+      done_.notify_one();
+    }
   }
 }
 
@@ -94,6 +97,11 @@ void Workers::for_each(size_t n, const std::function<void(size_t)>& fn, size_t g
   wake_.notify_all();
   work();
   // The others finish their last items; they are running, so poll.
+  if (!poll_) {
+    std::unique_lock<std::mutex> lock(mutex_);
+    done_.wait(lock, [&] { return busy_.load(std::memory_order_acquire) == 0; });
+    return;
+  }
   int polls = 0;
   while (busy_.load(std::memory_order_acquire) != 0)
     relax_cpu(polls);

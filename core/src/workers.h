@@ -33,7 +33,10 @@ class Workers {
 
   std::vector<std::thread> pool_;
   std::mutex mutex_;
-  std::condition_variable wake_;
+  std::condition_variable wake_, done_;
+  // Whether waits poll first: only when every thread has a core of its own (with more threads
+  // than cores a polling thread takes the core from one with work: 4x slower at 8 on 2).
+  bool poll_ = false;
   const std::function<void(size_t)>* fn_ = nullptr;
   size_t n_ = 0, grain_ = 1;
   std::atomic<size_t> next_{0};
