@@ -12,8 +12,8 @@ namespace {
 // thread takes longer than that to wake, and a loop is over before it is up.
 constexpr auto kSpin = std::chrono::microseconds(200);
 
-// One wait of a polling loop: a pause at first, then the core given up, so that more threads
-// than cores (a thread count above the machine's) still get their turn.
+// One wait of a polling loop: a pause at first, then the core given up, so that on a machine
+// busy with other work the threads with work still get their turn.
 inline void relax_cpu(int& polls) {
   if (++polls < 2000) {
 #if defined(__x86_64__) || defined(__i386__)
