@@ -10,7 +10,11 @@ top=$(cd "$(dirname "$0")/.." && pwd)
 mesh=${1:-$top/meshes/fandisk.off}
 ratio=${2:-0.1}
 "$top/scripts/setup.sh"
-"$top/scripts/build.sh" -DVRS_BUILD_TESTS=OFF
+# The build's output goes to a log: a first run reads as the comparison, not pages of make.
+mkdir -p "$top/build"
+log=$top/build/demo-build.log
+echo "demo: building (log: $log)"
+"$top/scripts/build.sh" -DVRS_BUILD_TESTS=OFF >"$log" 2>&1 || { tail -n 40 "$log" >&2; exit 1; }
 python=$(ls "${VRS_CACHE:-/var/cache/vrsimplify}"/venv/bin/python)
 "$python" "$top/scripts/compare_in_pymeshlab.py" "$top/build/pymeshlab/plugins/libfilter_vertex_removal.so" \
   "$mesh" "$ratio" "$top/out"

@@ -29,7 +29,9 @@ want=(build-essential cmake pkg-config git xz-utils libgtest-dev libgmock-dev li
       clang-14 libfuzzer-14-dev libclang-rt-14-dev libassimp-dev assimp-testmodels time
       # the newer MeshLabs: their sources through a separate apt configuration, their GUIs in
       # debootstrap roots, pymeshlab in a virtual environment
-      dpkg-dev debootstrap python3-venv)
+      dpkg-dev debootstrap python3-venv
+      # Python's headers for the package's extension module
+      python3-dev)
 want+=("$@")
 missing=()
 for p in "${want[@]}"; do
@@ -77,7 +79,7 @@ for v in 2022.02 2025.07; do
   "$top/scripts/lib/meshlab_sources.sh" "$v" "$third/meshlab-$v"
 done
 
-# pymeshlab and pytest, pinned, in a virtual environment of their own (rebuilt when
+# pymeshlab, pytest, trimesh and auditwheel, pinned, in a virtual environment of their own (rebuilt when
 # requirements.txt changes). Debian's python3, whatever else is on PATH.
 venv="$cache/venv"
 req_sha=$(sha256sum "$top/requirements.txt" | cut -d' ' -f1)

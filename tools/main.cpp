@@ -246,8 +246,10 @@ int main(int argc, char** argv) {
   const double diag = vrs::bounding_box_diagonal(mesh);
   opt.max_error = max_error_percent ? max_error / 100.0 * diag : max_error;
   if (error_bound && !(opt.max_error > 0)) opt.max_error = HUGE_VAL;
-  // Texture coordinates and normals stored per corner: their seams stay, new faces take the
-  // data of the corners they replace.
+  // Texture coordinates and normals stored per corner: their seams (for normals: hard edges,
+  // turning more than the feature angle or 60°) stay, new faces take the data of the corners
+  // they replace (flat-shaded normals: their own).
+  vrs_tool::set_feature_angle(*loaded.doc, opt.feature_angle_deg);
   const std::vector<uint32_t> seams = vrs_tool::seams(*loaded.doc, mesh);
   opt.constrained_edges = &seams;
   opt.corner_sources = vrs_tool::has_corner_data(*loaded.doc);

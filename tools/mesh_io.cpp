@@ -40,6 +40,8 @@ vrs_vcg::CornerData VcgDocument::corner_data() const {
   d.texcoord = (mask & Mask::IOM_WEDGTEXCOORD) && mesh.face.IsWedgeTexCoordEnabled();
   d.normal = (mask & Mask::IOM_WEDGNORMAL) && mesh.face.IsWedgeNormalEnabled();
   d.face_color = (mask & Mask::IOM_FACECOLOR) && mesh.face.IsColorEnabled();
+  d.flat_normals = d.normal && vrs_vcg::flat_normals(mesh);
+  if (feature_angle_deg > 0) d.normal_crease_deg = feature_angle_deg;
   return d;
 }
 
@@ -99,6 +101,10 @@ vrs::Mesh to_core(const VcgDocument& doc) {
   return out;
 }
 
+void set_feature_angle(VcgDocument& doc, double degrees) {
+  doc.feature_angle_deg = degrees;
+}
+
 bool has_corner_data(const VcgDocument& doc) {
   return doc.corner_data().any();
 }
@@ -136,6 +142,8 @@ void apply(VcgDocument& doc, const vrs::Mesh& simplified, const vrs::Report& rep
         const uint32_t source = report.corner_source[3 * t + c];
         vrs_vcg::copy_corner(data, m.face[live[source / 3]], int(source % 3), *fi, c, c == 0);
       }
+      if (carry && c == 2 && report.face_source[t] == vrs::kRemoved)
+        vrs_vcg::finish_face(data, *fi);
     }
   // Without corner sources the new faces have no per-corner data to write.
   if (!carry)

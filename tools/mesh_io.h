@@ -25,6 +25,8 @@ vrs::Mesh to_core(const VcgDocument& doc);
 // True when the document holds per-corner data (texture coordinates, normals) or face colors,
 // which then follow the simplification (ask the core for corner sources).
 bool has_corner_data(const VcgDocument& doc);
+// Per-corner normals turning more than this make a hard edge (default vrs_vcg::kNormalCreaseDeg).
+void set_feature_angle(VcgDocument& doc, double degrees);
 // Edges across which that data differs (seams), as core vertex pairs: the core keeps them.
 std::vector<uint32_t> seams(const VcgDocument& doc, const vrs::Mesh& core);
 

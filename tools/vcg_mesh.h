@@ -32,6 +32,8 @@ class VcgDocument {
   // indexed by the faces' texture index (WT(k).N()).
   std::string material_library;
   std::vector<std::string> materials;
+  // --feature-angle: also the angle past which per-corner normals make a hard edge.
+  double feature_angle_deg = 0;
 
   // Enables the optional components `mask` asks for (before faces are read into them).
   void enable(int mask_bits);

@@ -1,8 +1,32 @@
 #include "cmesh_bridge.h"
 
+#include <unordered_map>
+
 #include <vcg/complex/algorithms/update/topology.h>
 
 namespace vrs_plugin {
+
+namespace {
+
+// A quad loaded from a file is two triangles whose shared edge is flagged faux on both sides;
+// polygon export walks faux edges to rebuild it. Rebuilt faces carry no faux edge, and a
+// surviving half of a quad whose other half was rebuilt must lose its own, or the walk runs
+// off into faces that are not its quad (pymeshlab's default OBJ save threw std::bad_alloc).
+void clear_unpaired_faux_edges(CMeshO& m) {
+  std::unordered_map<uint64_t, int> flagged; // undirected edge -> faces flagging it faux
+  auto key = [&](const CFaceO& f, int e) {
+    uint64_t a = vcg::tri::Index(m, f.cV(e)), b = vcg::tri::Index(m, f.cV((e + 1) % 3));
+    return a < b ? a << 32 | b : b << 32 | a;
+  };
+  for (const CFaceO& f : m.face)
+    for (int e = 0; e < 3; ++e)
+      if (!f.IsD() && f.IsF(e)) ++flagged[key(f, e)];
+  for (CFaceO& f : m.face)
+    for (int e = 0; e < 3; ++e)
+      if (!f.IsD() && f.IsF(e) && flagged[key(f, e)] != 2) f.ClearF(e);
+}
+
+} // namespace
 
 CoreCopy to_core(CMeshO& m) {
   CoreCopy c;
@@ -29,12 +53,14 @@ CoreCopy to_core(CMeshO& m) {
   return c;
 }
 
-vrs_vcg::CornerData corner_data(const MeshModel& m) {
+vrs_vcg::CornerData corner_data(const MeshModel& m, double feature_angle) {
   vrs_vcg::CornerData d;
   d.texcoord = m.hasDataMask(MeshModel::MM_WEDGTEXCOORD);
   d.normal = m.hasDataMask(MeshModel::MM_WEDGNORMAL);
   d.color = m.hasDataMask(MeshModel::MM_WEDGCOLOR);
   d.face_color = m.hasDataMask(MeshModel::MM_FACECOLOR);
+  d.flat_normals = d.normal && vrs_vcg::flat_normals(m.cm);
+  if (feature_angle > 0) d.normal_crease_deg = feature_angle;
   return d;
 }
 
@@ -78,6 +104,7 @@ void apply(CMeshO& m, const CoreCopy& c, const vrs::Mesh& out, const vrs::Report
         vrs_vcg::copy_corner(d, m.face[c.face[source / 3]], int(source % 3), *fi, k, k == 0);
       }
     }
+    vrs_vcg::finish_face(d, *fi);
     if (select_new_faces) fi->SetS();
     ++fi;
   }
@@ -93,6 +120,7 @@ void apply(CMeshO& m, const CoreCopy& c, const vrs::Mesh& out, const vrs::Report
   for (size_t v = 0; v < r.remap.size(); ++v)
     if (r.remap[v] == vrs::kRemoved) vcg::tri::Allocator<CMeshO>::DeleteVertex(m, *c.vertex[v]);
   vcg::tri::Allocator<CMeshO>::CompactEveryVector(m);
+  clear_unpaired_faux_edges(m);
   // Adjacency the mesh carries (other filters may have enabled it) must describe the new faces.
   if (vcg::tri::HasFFAdjacency(m)) vcg::tri::UpdateTopology<CMeshO>::FaceFace(m);
   if (vcg::tri::HasVFAdjacency(m)) vcg::tri::UpdateTopology<CMeshO>::VertexFace(m);

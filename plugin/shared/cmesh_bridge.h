@@ -25,7 +25,8 @@ CoreCopy to_core(CMeshO& m);
 std::vector<uint8_t> lock_outside_selection(const CMeshO& m, const CoreCopy& copy);
 
 // The per-corner and per-face data the layer holds (texture coordinates, normals, colors).
-vrs_vcg::CornerData corner_data(const MeshModel& m);
+// `feature_angle` (degrees, 0: off) is also the crease angle of per-corner normals.
+vrs_vcg::CornerData corner_data(const MeshModel& m, double feature_angle);
 
 // Edges across which that data differs: the core keeps them (constrained edges).
 std::vector<uint32_t> seams(const CMeshO& m, const CoreCopy& copy, const vrs_vcg::CornerData& d);

@@ -170,9 +170,9 @@ QString Application::simplify_layer(MeshModel& m, const FilterSettings& s, int l
   CoreCopy copy = to_core(m.cm);
   vrs::Options o = s.options_for(level, m.cm.fn, m.cm.vn);
   // Texture coordinates, normals and colors stored per face corner: the edges where they
-  // differ are seams the core must keep, and new faces take the data of the corners they
-  // replace.
-  const vrs_vcg::CornerData data = corner_data(m);
+  // differ (normals: turn past the feature angle, or 60°) are seams the core must keep, and
+  // new faces take the data of the corners they replace (flat-shaded normals: their own).
+  const vrs_vcg::CornerData data = corner_data(m, s.feature_angle);
   const std::vector<uint32_t> seam_edges = seams(m.cm, copy, data);
   o.constrained_edges = &seam_edges;
   o.corner_sources = data.any();

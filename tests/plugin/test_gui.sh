@@ -2,7 +2,9 @@
 # GUI smoke test: the real MeshLab GUI under Xvfb (software GL) loads the plugin, the filter is
 # opened from Filters > Remeshing, Simplification and Reconstruction, applied through its
 # dialog, and screenshots are saved with the test output.
-#   test_gui.sh REPO_ROOT MESH OUT_DIR
+#   test_gui.sh REPO_ROOT MESH OUT_DIR [--installed]
+# --installed: the system's MeshLab with the plugin the Debian package installed (tests/packaging),
+# instead of a private copy holding the build's.
 # The clicks are at fixed places: a 1600x1000 screen, MeshLab 2020.09's default window (a fresh
 # HOME, so no saved layout), the menu entries in MeshLab's alphabetical order.
 set -u
@@ -38,12 +40,17 @@ fi
 
 top=$(realpath "$1") mesh=$(realpath "$2") out=$(realpath -m "$3")
 rm -rf "$out" && mkdir -p "$out/home"
-ml=$("$top/scripts/meshlab_private.sh" "$out/meshlab") || exit 1
+if [ "${4:-}" = --installed ]; then
+  ml=/usr/bin plugins=/usr/lib/x86_64-linux-gnu/meshlab/plugins
+else
+  ml=$("$top/scripts/meshlab_private.sh" "$out/meshlab") || exit 1
+  plugins=$ml/plugins
+fi
 timeout 180 xvfb-run -a -s '-screen 0 1600x1000x24' bash "$0" --inner "$out" "$ml" "$mesh"
 
 passed=0 failed=0
 check() { if eval "$1"; then passed=$((passed + 1)); else failed=$((failed + 1)); echo "FAIL: $2"; fi; }
-check 'grep -q "Current Plugins Dir is: $ml/plugins" "$out/meshlab.log"' "MeshLab did not use the private plugins folder"
+check 'grep -q "Current Plugins Dir is: $plugins" "$out/meshlab.log"' "MeshLab did not use the plugins folder $plugins"
 check 'grep -q "Applied filter Simplification: Vertex Removal Decimation" "$out/meshlab.log"' \
   "the filter was not applied from the Remeshing menu (see $out/*.png)"
 check 'grep -q "Vertex Removal Decimation: 12946 -> 6472 faces" "$out/meshlab.log"' "the default target (half the faces) was not met"

@@ -1,9 +1,11 @@
 #!/usr/bin/env bash
 # The real MeshLab 2022.02 or 2025.07 GUI (Debian trixie's or sid's package, in a root made by
-# scripts/lib/meshlab_root.sh) under Xvfb: our build is installed into the root with
-# `cmake --install --component`, the filter is found in Filters > Remeshing, Simplification and
-# Reconstruction, applied from its dialog, then applied with a bad parameter: MeshLab's failure
-# dialog must show our message and the layer stay as it was. Screenshots go with the output.
+# scripts/lib/meshlab_root.sh) under Xvfb: our Debian package for that MeshLab is packed from
+# the build (cpack) and installed into the root with `apt-get install ./file.deb`, the filter is
+# found in Filters > Remeshing, Simplification and Reconstruction, applied from its dialog, then
+# applied with a bad parameter: MeshLab's failure dialog must show our message and the layer
+# stay as it was. Then `apt-get remove` takes the plugin away and MeshLab still opens the mesh.
+# Screenshots go with the output.
 #   test_gui_newer.sh 2022.02|2025.07 ROOT BUILD_DIR MESH OUT_DIR
 # The clicks are at fixed places (a 1600x1000 screen, a fresh HOME, MeshLab's default layout);
 # they differ between the two versions, hence the table below.
@@ -49,14 +51,32 @@ inner() {
   return 0
 }
 
+after() { # MeshLab alone, once the package is removed: it starts and opens the mesh
+  HOME=/tmp/vrs-home "$here/../../scripts/lib/in_root.sh" "$root" meshlab "/tmp/vrs-gui/$(basename "$mesh")" \
+    >"$out/meshlab-after.log" 2>&1 &
+  local pid=$! i
+  for i in $(seq 60); do
+    grep -q "All files opened" "$out/meshlab-after.log" 2>/dev/null && break
+    sleep 0.5
+  done
+  pkill -f "meshlab /tmp/vrs-gui/" 2>/dev/null; wait "$pid" 2>/dev/null
+  return 0
+}
+
 if [ "${VRS_GUI_INNER:-}" = 1 ]; then inner; exit 0; fi
+if [ "${VRS_GUI_AFTER:-}" = 1 ]; then after; exit 0; fi
 rm -rf "$out" && mkdir -p "$out"
 
-# Install as a user would, into the root standing in for that Debian system; taken out again at
+# Install as a user would, into the root standing in for that Debian system; removed again at
 # the end so that the cached root stays as debootstrap made it.
-DESTDIR="$root" cmake --install "$build" --component "$component" >"$out/install.log" || {
-  echo "FAIL: cmake --install --component $component"; exit 1; }
-trap 'rm -f "$plugin"; rm -rf "$root/tmp/vrs-gui" "$root/tmp/vrs-home"' EXIT
+in_root() { "$here/../../scripts/lib/in_root.sh" "$root" env DEBIAN_FRONTEND=noninteractive "$@"; }
+(cd "$build" && cpack -G DEB -D CPACK_COMPONENTS_ALL="$component" -B "$out/pack" >"$out/cpack.log" 2>&1)
+deb=$(ls "$out"/pack/meshlab-filter-vertex-removal_*.deb 2>/dev/null) || { echo "FAIL: cpack (see $out/cpack.log)"; exit 1; }
+remove() { in_root apt-get remove -y -qq meshlab-filter-vertex-removal >>"$out/install.log" 2>&1; }
+trap 'remove; rm -f "$root/tmp/$(basename "$deb")"; rm -rf "$root/tmp/vrs-gui" "$root/tmp/vrs-home"' EXIT
+cp "$deb" "$root/tmp/"
+in_root apt-get install -y -qq "/tmp/$(basename "$deb")" >"$out/install.log" 2>&1 || {
+  echo "FAIL: apt-get install ./$(basename "$deb") (see $out/install.log)"; exit 1; }
 mkdir -p "$root/tmp/vrs-gui" "$root/tmp/vrs-home" && cp "$mesh" "$root/tmp/vrs-gui/"
 VRS_GUI_INNER=1 timeout 180 xvfb-run -a -s '-screen 0 1600x1000x24' bash "$0" "$@"
 faces=$(awk 'NF && $1 !~ /^#/ { n++; if (n == 2) { print $2; exit } }' "$mesh")
@@ -65,7 +85,8 @@ half=$(( (faces + 1) / 2 ))
 passed=0 failed=0
 check() { if eval "$1"; then passed=$((passed + 1)); else failed=$((failed + 1)); echo "FAIL: $2"; fi; }
 log="$out/meshlab.log"
-check '[ -f "$out/install.log" ] && grep -Eq "(Installing|Up-to-date): $plugin" "$out/install.log"' "not installed into MeshLab's plugins folder"
+check 'in_root dpkg -L meshlab-filter-vertex-removal | grep -qx "${plugin#"$root"}" && [ -f "$plugin" ]' \
+  "the package did not install the plugin into MeshLab's plugins folder"
 check '! grep -q "Unable to load\|does not seem to be\|different version\|different floating" "$log"' "MeshLab refused the plugin"
 check 'grep -Eq "Applied filter:? Simplification: Vertex Removal Decimation" "$log"' \
   "the filter was not applied from the Remeshing menu (see $out/*.png)"
@@ -81,6 +102,13 @@ check '[ "$(grep -Ec "Applied filter:? " "$log")" -eq 2 ]' "not exactly two succ
 for s in 1-remeshing-menu 2-dialog 3-applied 4-failure-dialog 5-after-failure; do
   check '[ -s "$out/$s.png" ]' "no screenshot $s.png"
 done
+
+# Removed, MeshLab still starts and opens the mesh (and no longer lists the filter's plugin).
+remove
+check '[ ! -e "$plugin" ]' "the plugin is still there after apt-get remove"
+VRS_GUI_AFTER=1 timeout 120 xvfb-run -a -s '-screen 0 1600x1000x24' bash "$0" "$@"
+check 'grep -q "All files opened" "$out/meshlab-after.log"' \
+  "MeshLab does not open the mesh after the package's removal (see $out/meshlab-after.log)"
 echo "MeshLab $version ($(cat "$root/.meshlab-version")): screenshots in $out"
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -276,3 +276,67 @@ def test_max_error_is_a_parameter_and_certifies_the_hausdorff_distance(plugin, m
     with pytest.raises(pymeshlab.PyMeshLabException, match="Max error"):
         ms.apply_filter(FILTER, maxerror=-1.0)
 
+
+
+def _quad_grid_obj(path, n=30):
+    """An OBJ of n x n quads on a bent sheet, as CAD and subdivision tools write them."""
+    lines = []
+    for j in range(n + 1):
+        for i in range(n + 1):
+            x, y = i / n, j / n
+            lines.append(f"v {x:.6f} {y:.6f} {0.1 * np.sin(3 * x) * np.cos(2 * y):.6f}")
+    for j in range(n):
+        for i in range(n):
+            a = j * (n + 1) + i + 1
+            lines.append(f"f {a} {a + 1} {a + n + 2} {a + n + 1}")
+    path.write_text("\n".join(lines) + "\n")
+
+
+def _obj_polygons(path):
+    verts, polys = [], []
+    for line in path.read_text().splitlines():
+        if line.startswith("v "):
+            verts.append(tuple(float(x) for x in line.split()[1:4]))
+        elif line.startswith("f "):
+            polys.append([int(c.split("/")[0]) - 1 for c in line.split()[1:]])
+    return verts, polys
+
+
+def test_quads_round_trip_through_the_default_obj_save(plugin, tmp_path):
+    """Rebuilt faces are plain triangles, untouched quads stay quads: pymeshlab's default OBJ
+    save (polygons from faux edges) works after the filter (it threw std::bad_alloc)."""
+    src, out = tmp_path / "quads.obj", tmp_path / "out.obj"
+    _quad_grid_obj(src)
+    ms = load(src)
+    assert ms.current_mesh().face_number() == 2 * 30 * 30
+    ms.apply_filter(FILTER, targetfacenum=600)
+    assert ms.current_mesh().face_number() <= 600
+    ms.save_current_mesh(str(out))
+    in_verts, in_polys = _obj_polygons(src)
+    out_verts, out_polys = _obj_polygons(out)
+    quads = [p for p in out_polys if len(p) == 4]
+    assert quads and all(len(p) in (3, 4) for p in out_polys)
+    assert sum(len(p) - 2 for p in out_polys) == ms.current_mesh().face_number()
+    # Each quad written is one of the input's quads (same four positions).
+    input_quads = {frozenset(in_verts[i] for i in p) for p in in_polys}
+    assert all(frozenset(out_verts[i] for i in p) in input_quads for p in quads)
+    assert load(out).current_mesh().face_number() == ms.current_mesh().face_number()
+
+
+def test_flat_shaded_obj_simplifies_as_without_normals(plugin, tmp_path):
+    """One normal per face (`f 1//1 2//1 3//1`) is flat shading, not a seam on every edge."""
+    import trimesh
+    m = trimesh.creation.icosphere(subdivisions=3)
+    flat, plain = tmp_path / "flat.obj", tmp_path / "plain.obj"
+    vs = "".join(f"v {x:.7f} {y:.7f} {z:.7f}\n" for x, y, z in m.vertices)
+    plain.write_text(vs + "".join(f"f {a} {b} {c}\n" for a, b, c in m.faces + 1))
+    flat.write_text(vs + "".join(f"vn {x:.7f} {y:.7f} {z:.7f}\n" for x, y, z in m.face_normals)
+                    + "".join(f"f {a}//{i} {b}//{i} {c}//{i}\n"
+                              for i, (a, b, c) in enumerate(m.faces + 1, start=1)))
+    faces = {}
+    for path in (flat, plain):
+        ms = load(path)
+        r = ms.apply_filter(FILTER, targetfacenum=len(m.faces) // 10)
+        assert r["constrained_edges"] == 0 and r["target_reached"]
+        faces[path.name] = ms.current_mesh().face_number()
+    assert faces["flat.obj"] == faces["plain.obj"] <= len(m.faces) // 10

@@ -1,0 +1,187 @@
+"""The numpy API against the properties the core promises: vertices are input vertices, the
+maps say where everything comes from, targets are met, topology and orientation hold, the
+error bound holds, bad input raises ValueError, and the caller's arrays are never written."""
+import os
+import signal
+import threading
+
+import numpy as np
+import pytest
+
+import vrsimplify
+from conftest import edge_face_counts, point_triangle_distances
+
+
+def check_result(r, v, f):
+    assert r.vertices.dtype == v.dtype and r.faces.dtype == f.dtype
+    assert np.array_equal(r.vertices, v[r.vertex_map])  # exact input values
+    assert len(np.unique(r.vertex_map)) == len(r.vertex_map)
+    assert r.faces.min() >= 0 and r.faces.max() < len(r.vertices)
+    kept = r.face_source >= 0
+    assert np.array_equal(r.vertex_map[r.faces[kept]], f[r.face_source[kept]])
+    # Each corner's source is a corner of the same input vertex.
+    assert np.array_equal(f.reshape(-1)[r.corner_source], r.vertex_map[r.faces])
+    before, after = edge_face_counts(f), edge_face_counts(r.vertex_map[r.faces])
+    assert not [e for e, c in after.items() if c > 2 and before.get(e, 0) <= 2]
+    # Orientation: on a closed, consistently oriented input every edge runs once each way.
+    directed = np.concatenate([r.faces[:, [0, 1]], r.faces[:, [1, 2]], r.faces[:, [2, 0]]])
+    assert len(np.unique(directed, axis=0)) == len(directed)
+
+
+@pytest.mark.parametrize("ratio", [0.5, 0.1, 0.01])
+def test_ratio_target_and_invariants(sphere, ratio):
+    v, f = sphere
+    r = vrsimplify.simplify(v, f, ratio=ratio)
+    check_result(r, v, f)
+    assert len(r.faces) <= round(ratio * len(f)) + 1
+    assert r.report["target_reached"] and r.report["stop_reason"] == "target_reached"
+    assert r.report["output_faces"] == len(r.faces)
+
+
+def test_face_and_vertex_targets(fandisk):
+    v, f = fandisk
+    r = vrsimplify.simplify(v, f, faces=1000)
+    assert len(r.faces) <= 1000 and r.report["target_reached"]
+    r = vrsimplify.simplify(v, f, vertices=700)
+    assert len(np.unique(r.faces)) <= 700 and r.report["target_reached"]
+
+
+def test_dtypes_and_layouts_give_the_same_mesh(sphere):
+    v, f = sphere
+    ref = vrsimplify.simplify(v.astype(np.float32), f, ratio=0.2)
+    for vv, ff in [(v.astype(np.float32), f.astype(np.int32)),
+                   (np.asfortranarray(v.astype(np.float32)), f.astype(np.uint32)),
+                   (np.hstack([v, v]).astype(np.float32)[:, :3], f[:, :]),
+                   (v.astype(np.float32).tolist(), f.tolist())]:
+        r = vrsimplify.simplify(vv, ff, ratio=0.2)
+        assert np.array_equal(r.faces, ref.faces) and np.array_equal(r.vertex_map, ref.vertex_map)
+    # float64 input keeps its own values (the core computes in float32).
+    r = vrsimplify.simplify(v, f, ratio=0.2)
+    assert r.vertices.dtype == np.float64 and np.array_equal(r.vertices, v[r.vertex_map])
+
+
+def test_input_arrays_are_not_written(sphere):
+    v, f = sphere[0].copy(), sphere[1].copy()
+    v.flags.writeable = False
+    f.flags.writeable = False
+    vrsimplify.simplify(v, f, ratio=0.1)
+    assert np.array_equal(v, sphere[0]) and np.array_equal(f, sphere[1])
+
+
+def test_any_thread_count_gives_the_same_mesh(fandisk):
+    v, f = fandisk
+    one = vrsimplify.simplify(v, f, ratio=0.1, threads=1)
+    two = vrsimplify.simplify(v, f, ratio=0.1, threads=2)
+    assert np.array_equal(one.faces, two.faces) and np.array_equal(one.vertex_map, two.vertex_map)
+
+
+def test_two_python_threads_at_once(sphere, fandisk):
+    """The GIL is released during a run: two threads simplify side by side, each correctly."""
+    results, ticks = {}, []
+    def run(name, mesh):
+        results[name] = vrsimplify.simplify(*mesh, ratio=0.05, threads=1,
+                                            progress=lambda _: ticks.append(name))
+    threads = [threading.Thread(target=run, args=(n, m))
+               for n, m in (("sphere", sphere), ("fandisk", fandisk))]
+    for t in threads:
+        t.start()
+    for t in threads:
+        t.join()
+    for name, mesh in (("sphere", sphere), ("fandisk", fandisk)):
+        alone = vrsimplify.simplify(*mesh, ratio=0.05, threads=1)
+        assert np.array_equal(results[name].faces, alone.faces)
+    assert set(ticks) == {"sphere", "fandisk"}
+
+
+def test_max_error_is_a_guarantee(sphere):
+    v, f = sphere
+    bound = 0.01
+    r = vrsimplify.simplify(v, f, max_error=bound)
+    assert 0 < r.report["error_bound"] <= bound * (1 + 1e-6)
+    assert len(r.faces) < len(f) / 2
+    # Every input vertex lies within the certified bound of the output surface.
+    d = point_triangle_distances(v, r.vertices[r.faces])
+    assert d.max() <= r.report["error_bound"] * (1 + 1e-4) + 1e-7
+    pct = vrsimplify.simplify(v, f, max_error="0.5%")
+    assert pct.report["error_bound"] <= 0.005 * vrsimplify.bounding_box_diagonal(v) * (1 + 1e-6)
+
+
+def test_locked_vertices_and_seams_stay(sphere):
+    v, f = sphere
+    locked = v[:, 2] > 0.5
+    r = vrsimplify.simplify(v, f, ratio=0.1, locked=locked)
+    assert set(np.flatnonzero(locked)) <= set(r.vertex_map.tolist())
+    # A seam polyline that ends: its two ends (one seam edge each) are kept.
+    path = [int(np.argmax(v[:, 0]))]
+    for _ in range(6):
+        ring = np.unique(f[(f == path[-1]).any(axis=1)])
+        ring = [x for x in ring if x not in path]
+        path.append(max(ring, key=lambda x: v[x, 1]))
+    seams = np.array(list(zip(path[:-1], path[1:])))
+    r = vrsimplify.simplify(v, f, ratio=0.05, seams=seams)
+    assert {path[0], path[-1]} <= set(r.vertex_map.tolist())
+
+
+def test_progress_reports_and_cancels(fandisk):
+    v, f = fandisk
+    seen = []
+    vrsimplify.simplify(v, f, ratio=0.1, progress=seen.append)
+    assert seen and seen == sorted(seen) and seen[-1] == 1.0
+    r = vrsimplify.simplify(v, f, ratio=0.01, progress=lambda x: x < 0.3)
+    assert r.report["stop_reason"] == "cancelled" and not r.report["target_reached"]
+    check_result(r, v, f)  # a valid mesh, partly simplified
+    def boom(_):
+        raise RuntimeError("from the callback")
+    with pytest.raises(RuntimeError, match="from the callback"):
+        vrsimplify.simplify(v, f, ratio=0.1, progress=boom)
+
+
+def test_ctrl_c_raises_keyboard_interrupt_and_leaves_the_input(fandisk):
+    v, f = fandisk[0].copy(), fandisk[1].copy()
+    def interrupt(_):
+        os.kill(os.getpid(), signal.SIGINT)  # as Ctrl-C: Python's handler marks it pending
+    with pytest.raises(KeyboardInterrupt):
+        vrsimplify.simplify(v, f, ratio=0.01, progress=interrupt)
+    assert np.array_equal(v, fandisk[0]) and np.array_equal(f, fandisk[1])
+
+
+@pytest.mark.parametrize("kwargs, message", [
+    (dict(ratio=1.5), "ratio must be in"),
+    (dict(ratio=0.5, faces=10), "at most one"),
+    (dict(faces=-3), "count"),
+    (dict(faces=2.5), "count"),
+    (dict(mode="cubic"), "mode must be"),
+    (dict(threads=-1), "threads must be"),
+    (dict(feature_angle=400), "feature angle"),
+    (dict(max_error=-1), "max_error must be > 0"),
+    (dict(max_error="abc%"), "max_error must be"),
+    (dict(locked=[1, 0]), "boolean"),
+    (dict(locked=np.zeros(3, bool)), "one entry per vertex"),
+])
+def test_bad_parameters_raise_value_error(sphere, kwargs, message):
+    with pytest.raises(ValueError, match=message):
+        vrsimplify.simplify(*sphere, **kwargs)
+
+
+def test_bad_input(sphere):
+    v, f = sphere
+    with pytest.raises(ValueError, match="out of range"):
+        vrsimplify.simplify(v, np.vstack([f, [[0, 1, len(v)]]]))
+    with pytest.raises(ValueError, match="out of range"):
+        vrsimplify.simplify(v, np.vstack([f, [[0, 1, -1]]]))
+    with pytest.raises(ValueError, match=r"\(n, 3\)"):
+        vrsimplify.simplify(v[:, :2], f)
+    with pytest.raises(ValueError, match="floats"):
+        vrsimplify.simplify(v.astype(np.complex64), f)
+    with pytest.raises(ValueError, match="integers"):
+        vrsimplify.simplify(v, f.astype(np.float64))
+    # NaN vertices and degenerate faces: a valid result that says what it worked around.
+    bad_v = v.copy()
+    bad_v[5] = np.nan
+    bad_f = np.vstack([f, [[1, 1, 2]]])
+    r = vrsimplify.simplify(bad_v, bad_f, ratio=0.2)
+    assert r.report["input_issues"]["nonfinite_vertices"] == 1
+    assert r.report["input_issues"]["degenerate_faces"] == 1
+    assert 5 in r.vertex_map
+    empty = vrsimplify.simplify(np.zeros((0, 3)), np.zeros((0, 3), np.int64))
+    assert len(empty.faces) == 0 and len(empty.vertices) == 0

@@ -1,0 +1,127 @@
+"""vrsimplify: vertex-removal mesh simplification (Pivec & Domiter, "A General Simplification
+Algorithm"). Every output vertex is an input vertex, untouched: any per-vertex data follows
+through ``Result.vertex_map``, per-face and per-corner data through ``face_source`` and
+``corner_source``.
+
+    import vrsimplify
+    r = vrsimplify.simplify(vertices, faces, ratio=0.1)
+    r.vertices, r.faces, r.report["stop_reason"]
+"""
+from __future__ import annotations
+
+import dataclasses
+from typing import Callable, Optional, Union
+
+import numpy as np
+
+from . import _core
+
+__version__: str = _core.__version__
+__all__ = ["simplify", "Result", "bounding_box_diagonal"]
+
+
+@dataclasses.dataclass(frozen=True)
+class Result:
+    """A simplified mesh and where each of its parts comes from in the input."""
+
+    vertices: np.ndarray  # (m, 3): the input's rows vertex_map names, same dtype, same values
+    faces: np.ndarray  # (k, 3): indices into vertices, the input faces' dtype
+    vertex_map: np.ndarray  # (m,) int64: output vertex -> input vertex
+    face_source: np.ndarray  # (k,) int64: the input face an output face is, or -1 if new
+    # (k, 3) int64: for each output corner the input corner (3 * face + corner) whose
+    # per-corner data (UVs, normals) it takes: same vertex, same side of every seam
+    corner_source: np.ndarray
+    report: dict  # counts, "stop_reason" as text, "error_bound" (mesh units), warnings
+
+
+def _array(a, what: str, kinds: str) -> np.ndarray:
+    a = np.asarray(a)  # no copy for an ndarray of any layout: the core reads strides
+    if a.dtype.kind not in kinds:
+        raise ValueError(f"{what} has dtype {a.dtype}, expected "
+                         + ("floats" if kinds == "f" else "integers"))
+    return a
+
+
+def _target(ratio, faces, vertices, max_error) -> tuple[str, float]:
+    given = [(k, v) for k, v in (("ratio", ratio), ("faces", faces), ("vertices", vertices))
+             if v is not None]
+    if len(given) > 1:
+        raise ValueError("give at most one of ratio, faces and vertices")
+    if given:
+        kind, value = given[0]
+        try:
+            return kind, float(value)
+        except (TypeError, ValueError):
+            raise ValueError(f"{kind} must be a number, got {value!r}") from None
+    # The bound alone simplifies as far as it allows; with nothing at all, half the faces.
+    return ("faces", 0.0) if max_error is not None else ("ratio", 0.5)
+
+
+def _max_error(max_error, vertices: np.ndarray) -> float:
+    if max_error is None:
+        return 0.0
+    if isinstance(max_error, str):  # "0.5%": percent of the bounding-box diagonal
+        text = max_error.strip()
+        try:
+            value = float(text[:-1]) if text.endswith("%") else float(text)
+        except ValueError:
+            raise ValueError(f"max_error must be a distance or a percentage, got {max_error!r}") from None
+        if text.endswith("%"):
+            value = value / 100.0 * bounding_box_diagonal(vertices)
+    else:
+        value = float(max_error)
+    if not value > 0:
+        raise ValueError(f"max_error must be > 0 (math.inf tracks the bound without limit), got {max_error!r}")
+    return value
+
+
+def simplify(mesh_vertices, mesh_faces, /, *, ratio: Optional[float] = None,
+             faces: Optional[int] = None, vertices: Optional[int] = None,
+             max_error: Union[float, str, None] = None, mode: str = "surface", threads: int = 0,
+             simplify_boundary: bool = False, feature_angle: float = 0.0, seams=None, locked=None,
+             progress: Optional[Callable[[float], Optional[bool]]] = None) -> Result:
+    """Simplifies a triangle mesh by removing vertices; the input arrays are left untouched.
+
+    mesh_vertices: (n, 3) float32 or float64; mesh_faces: (k, 3) int32 or int64 (any integer).
+    Target, at most one: ``ratio`` of the faces kept (default 0.5), ``faces`` or ``vertices``
+    (counts). ``max_error``: a guaranteed symmetric Hausdorff bound, in mesh units or as a
+    string "E%" of the bounding-box diagonal; alone it simplifies as far as the bound allows,
+    with a count target whichever comes first; ``math.inf`` reports the certified bound
+    without limiting (``report["error_bound"]``).
+    mode: "surface" (3D), "terrain" (2.5D, XY plane) or "planar" (2D).
+    threads: 0 = every hardware thread; the output is the same for any number.
+    simplify_boundary: also remove border vertices (kept by default).
+    feature_angle: keep edges whose faces turn more than this many degrees apart (0: off).
+    seams: (s, 2) vertex pairs kept as polylines (texture seams, material borders).
+    locked: boolean mask, one entry per vertex: those vertices stay.
+    progress: called with the fraction done; returning False stops (a valid, partial result).
+    Ctrl-C raises KeyboardInterrupt. Bad input or parameters raise ValueError.
+    """
+    v = _array(mesh_vertices, "vertices", "f")
+    f = _array(mesh_faces, "faces", "iu")
+    if v.dtype not in (np.float32, np.float64):
+        v = v.astype(np.float64)
+    if f.dtype not in (np.int32, np.int64, np.uint32, np.uint64):
+        f = f.astype(np.int64)
+    kind, value = _target(ratio, faces, vertices, max_error)
+    if seams is not None:
+        seams = _array(seams, "seams", "iu").astype(np.int64, copy=False)
+    if locked is not None:
+        locked = np.asarray(locked)
+        if locked.dtype != np.bool_:
+            raise ValueError(f"locked must be a boolean mask, got dtype {locked.dtype}")
+    out_faces, vertex_map, face_source, corner_source, report = _core.simplify(
+        v, f, kind, value, _max_error(max_error, v), str(mode), int(threads),
+        bool(simplify_boundary), float(feature_angle), seams, locked, progress)
+    return Result(vertices=v[vertex_map], faces=out_faces.astype(f.dtype, copy=False),
+                  vertex_map=vertex_map, face_source=face_source, corner_source=corner_source,
+                  report=report)
+
+
+def bounding_box_diagonal(vertices) -> float:
+    """Length of the bounding box's diagonal of the finite vertices (the unit of "E%")."""
+    v = _array(vertices, "vertices", "f")
+    if v.dtype not in (np.float32, np.float64):
+        v = v.astype(np.float64)
+    return float(_core.bounding_box_diagonal(v))
+
