@@ -10,6 +10,8 @@
 //             error_max,error_mean,certified)
 //   vrs_bench --loop MESH LEVELS OUT.ply       Loop subdivision (large inputs)
 //   vrs_bench --terrain K OUT.ply              (2^K + 1)^2 fractal terrain
+//   vrs_bench --convert MESH OUT.ply           the mesh as every method here reads it (binary
+//                                             PLY: what bench/python_peers.py hands to Python)
 // Methods: ours (defaults) with suffixes -factor / -local (priority), -linear / -log (mapping),
 // -heap (exact queue), -eager (every neighbour re-priced at once), -tN (N threads;
 // default 1 here, so that runs compare), -intN (N intervals), -projection (the paper's filling
@@ -200,6 +202,9 @@ int make(int argc, char** argv) {
     if (!load_core(argv[2], in)) return 1;
     m = vrs_bench::loop_subdivide(in, std::atoi(argv[3]));
     out = argv[4];
+  } else if (std::string(argv[1]) == "--convert" && argc == 4) {
+    if (!load_core(argv[2], m)) return 1;
+    out = argv[3];
   } else if (std::string(argv[1]) == "--terrain" && argc == 4) {
     m = vrs_bench::fractal_terrain(std::atoi(argv[2]), 2026);
     out = argv[3];
@@ -226,7 +231,8 @@ int main(int argc, char** argv) {
   if (std::string(argv[1]) == "--compare") return compare(argc, argv);
   if (std::string(argv[1]) == "--info") return info(argc, argv);
   if (std::string(argv[1]) == "--bound") return bound(argc, argv);
-  if (std::string(argv[1]) == "--loop" || std::string(argv[1]) == "--terrain")
+  if (std::string(argv[1]) == "--loop" || std::string(argv[1]) == "--terrain" ||
+      std::string(argv[1]) == "--convert")
     return make(argc, argv);
   std::string path = argv[1], name;
   std::vector<std::string> ratios = {"0.5", "0.1", "0.01"},

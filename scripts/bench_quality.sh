@@ -51,10 +51,7 @@ if [ "$baseline" != none ]; then
 fi
 
 files=()
-while IFS= read -r f; do files+=("$f"); done < <(
-  find "$top/third_party/cgal-data/data/meshes" -maxdepth 1 -type f | sort
-  find /usr/share/assimp/models -type f \( -iname '*.obj' -o -iname '*.ply' -o -iname '*.stl' \
-    -o -iname '*.off' \) -not -path '*/invalid/*' | sort)
+while IFS= read -r f; do files+=("$f"); done < <("$top/scripts/lib/bench_meshes.sh")
 report=0
 [ -n "$csv" ] || { csv=$top/bench/quality.csv; report=1; }
 work=$(mktemp -d)
