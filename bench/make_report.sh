@@ -113,8 +113,9 @@ for m in $(awk -F, 'NR > 1 && !seen[$1 "," $3]++ { n[$1]++ } END { for (m in n) 
   echo "![$m](plots/error_$m.png)"
 done
 # The speed runs (scripts/bench_speed.sh), measured apart: medians of alternated runs; and
-# where their time goes (scripts/profile.sh). Their headings one level down.
-for part in SPEED PROFILE; do
+# where their time goes (scripts/profile.sh); the Python peers and the numpy API
+# (scripts/bench_python_peers.sh, scripts/bench_python_api.sh). Their headings one level down.
+for part in SPEED PROFILE PYTHON_PEERS PYTHON_API; do
   if [ -f "$out/$part.md" ]; then
     echo
     sed 's/^#/##/' "$out/$part.md"

@@ -219,4 +219,5 @@ def main():
     open(out, "w").write("\n".join(lines))
 
 
-main()
+if __name__ == "__main__":
+    main()

@@ -14,14 +14,7 @@ if [ "${1:-}" = --samples ]; then samples=$2; shift 2; fi
 "$top/scripts/build.sh" >/dev/null
 "$top/scripts/build_wheel.sh"
 venv=$cache/peers-venv
-req_sha=$(sha256sum "$top/bench/requirements-peers.txt" | cut -d' ' -f1)
-if [ "$(cat "$venv/.requirements.sha256" 2>/dev/null)" != "$req_sha" ]; then
-  echo "bench_python_peers: virtual environment $venv"
-  rm -rf "$venv"
-  /usr/bin/python3 -m venv "$venv"
-  "$venv/bin/pip" install -q --disable-pip-version-check -r "$top/bench/requirements-peers.txt"
-  echo "$req_sha" >"$venv/.requirements.sha256"
-fi
+"$top/scripts/lib/pinned_venv.sh" "$venv" "$top/bench/requirements-peers.txt"
 "$venv/bin/pip" install -q --disable-pip-version-check --no-deps --force-reinstall "$top"/dist/vrsimplify-*.whl
 files=("$@")
 [ ${#files[@]} -gt 0 ] || mapfile -t files < <("$top/scripts/lib/bench_meshes.sh")

@@ -79,17 +79,9 @@ for v in 2022.02 2025.07; do
   "$top/scripts/lib/meshlab_sources.sh" "$v" "$third/meshlab-$v"
 done
 
-# pymeshlab, pytest, trimesh and auditwheel, pinned, in a virtual environment of their own (rebuilt when
-# requirements.txt changes). Debian's python3, whatever else is on PATH.
-venv="$cache/venv"
-req_sha=$(sha256sum "$top/requirements.txt" | cut -d' ' -f1)
-if [ "$(cat "$venv/.requirements.sha256" 2>/dev/null)" != "$req_sha" ]; then
-  echo "setup: Python virtual environment $venv (pymeshlab, pytest)"
-  rm -rf "$venv"
-  /usr/bin/python3 -m venv "$venv"
-  "$venv/bin/pip" install -q --disable-pip-version-check -r "$top/requirements.txt"
-  echo "$req_sha" >"$venv/.requirements.sha256"
-fi
+# pymeshlab, pytest, trimesh and auditwheel, pinned, in a virtual environment of their own
+# (rebuilt when requirements.txt changes). Debian's python3, whatever else is on PATH.
+"$top/scripts/lib/pinned_venv.sh" "$cache/venv" "$top/requirements.txt"
 
 if [ "$roots" -eq 1 ]; then
   for suite in trixie sid; do
