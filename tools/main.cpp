@@ -11,7 +11,9 @@
 
 #include "mesh_io.h"
 #include "progress_bar.h"
+#include "tiled_run.h"
 #include "vrs/simplify.h"
+#include "vrs/tiled.h"
 
 namespace {
 
@@ -53,6 +55,16 @@ const char* kUsage =
     "                                  terminal (a bar, after the first second); --progress\n"
     "                                  elsewhere prints a line per 10 %\n"
     "  --json                          print one JSON line instead of the text report\n"
+    "bigger than memory (tiled, out of core; with --ratio):\n"
+    "  --memory SIZE                   memory budget (512M, 2G, ...): a mesh that does not\n"
+    "                                  fit is streamed into tiles simplified on local worker\n"
+    "                                  processes and joined by input vertex id (.ply or .obj;\n"
+    "                                  positions only); one that fits runs in core as usual\n"
+    "  --workers N                     worker processes (default: the cores)\n"
+    "  --work-dir DIR                  tile files (default OUTPUT.vrs-tiles; removed after)\n"
+    "  --scheduler ADDRESS             run the tiles as tasks of a Dask cluster (needs the\n"
+    "                                  Python package with dask and distributed; --work-dir\n"
+    "                                  must be a path every worker can reach)\n"
     "  --ascii                         write ascii PLY (default binary)\n";
 
 int usage_error(const std::string& msg) {
@@ -138,6 +150,7 @@ int main(int argc, char** argv) {
   int targets = 0;
   double max_error = 0; // mesh units, or percent of the diagonal
   bool max_error_percent = false, error_bound = false;
+  vrs_tool::TiledRequest tiled; // --memory / --scheduler
   for (int i = 1; i < argc; ++i) {
     std::string a = argv[i];
     auto value = [&]() -> const char* {
@@ -167,6 +180,20 @@ int main(int argc, char** argv) {
       if (e.empty() || !parse_double(e.c_str(), max_error) || !(max_error > 0))
         return usage_error("--max-error needs a distance > 0, in mesh units or with % (of the "
                            "bounding-box diagonal)");
+    } else if (a == "--memory") {
+      if (!(v = value()) || !(tiled.memory = vrs::tiled::parse_memory(v)))
+        return usage_error("--memory needs a size such as 512M or 2G");
+    } else if (a == "--workers") {
+      size_t n = 0;
+      if (!(v = value()) || !parse_count(v, n) || n < 1 || n > 1024)
+        return usage_error("--workers needs a count in [1, 1024]");
+      tiled.workers = int(n);
+    } else if (a == "--work-dir") {
+      if (!(v = value()) || !*v) return usage_error("--work-dir needs a folder");
+      tiled.workdir = v;
+    } else if (a == "--scheduler") {
+      if (!(v = value()) || !*v) return usage_error("--scheduler needs a Dask scheduler address");
+      tiled.scheduler = v;
     } else if (a == "--auto") {
       opt.target.kind = vrs::TargetKind::Auto;
       ++targets;
@@ -239,6 +266,17 @@ int main(int argc, char** argv) {
     opt.target.faces = 0;
   }
 
+  if (tiled.memory || !tiled.scheduler.empty()) {
+    const uint64_t faces = vrs_tool::estimate_faces(in);
+    if (!tiled.scheduler.empty() || !vrs::tiled::fits_in_core(faces, tiled.memory)) {
+      if (targets > 1 || opt.target.kind != vrs::TargetKind::Ratio || max_error > 0)
+        return usage_error("tiled runs (--memory, --scheduler) take --ratio only");
+      tiled.input = in, tiled.output = out, tiled.ratio = opt.target.ratio;
+      tiled.json = json;
+      tiled.progress = progress == 1 || (progress == -1 && isatty(STDERR_FILENO));
+      return vrs_tool::run_tiled(tiled);
+    }
+  }
   vrs_tool::LoadResult loaded = vrs_tool::load(in);
   if (!loaded.doc) {
     std::fprintf(stderr, "vrsimplify: %s\n", loaded.error.c_str());

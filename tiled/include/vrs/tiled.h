@@ -1,0 +1,59 @@
+// Tiled, out-of-core simplification (after Cignoni et al. 2003, "External memory management and
+// simplification of huge meshes", and Isenburg et al. 2003, "Large mesh simplification using
+// processing sequences"). The input is streamed once into a work directory and cut into spatial
+// tiles; each tile is simplified by the core on its own, with the vertices it shares with
+// other tiles (and their neighbours) locked; further levels over shifted or larger tiles
+// release the previous borders until the target is met; the output is joined by input vertex
+// id, which needs no welding: every output vertex is an input vertex.
+//
+// Each step is a function of the work directory alone, so tiles can run anywhere that sees it
+// (local processes, Dask workers): begin -> { run_tile for every tile; next_level } -> finish.
+// Errors are thrown as std::runtime_error with a message for the user.
+#pragma once
+
+#include <cstddef>
+#include <cstdint>
+#include <string>
+
+namespace vrs::tiled {
+
+struct Settings {
+  double ratio = 0.5;                // of the input's faces
+  uint64_t faces_per_tile = 2000000; // largest tile, from the memory budget (faces_for_memory)
+  std::string workdir;               // made if missing; must be writable
+};
+
+struct Level {
+  int level = 0;          // 1, 2, ...
+  uint64_t tiles = 0;     // tiles to run at this level; 0 once the run is done
+  uint64_t faces = 0;     // faces entering the level
+  uint64_t target = 0;    // faces wanted in the end
+  double ratio = 1.0;     // what each tile keeps at this level
+};
+
+// Streams `input` (.ply ascii or binary, .obj) into the work directory and cuts level 1.
+Level begin(const std::string& input, const Settings& settings);
+// Simplifies one tile of the work directory's current level; reads and writes its files only,
+// and writes its output atomically (a re-run after a killed worker is safe).
+void run_tile(const std::string& workdir, int level, uint64_t tile);
+// Once every tile of the current level has run: cuts the next level, or returns tiles == 0.
+Level next_level(const std::string& workdir);
+// Writes the output (.ply binary, or .obj) atomically: the input's vertices that faces still
+// use, in input order, and the faces. Returns the output's face count.
+uint64_t finish(const std::string& workdir, const std::string& output);
+
+// Removes the work directory and everything in it.
+void discard(const std::string& workdir);
+
+// Faces a tile may hold for `bytes` of memory shared by `workers` processes (each holds one
+// tile at a time), and whether a mesh of `faces` is better run in core within `bytes`.
+uint64_t faces_for_memory(uint64_t bytes, int workers);
+bool fits_in_core(uint64_t faces, uint64_t bytes);
+// "2G", "512M", "1.5G", "800000K" -> bytes; 0 when unreadable.
+uint64_t parse_memory(const std::string& text);
+
+// Runs every tile of `level` on `workers` local processes (fork): the embedded default.
+void run_level_locally(const std::string& workdir, const Level& level, int workers,
+                       bool progress);
+
+} // namespace vrs::tiled

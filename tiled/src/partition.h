@@ -1,0 +1,29 @@
+// Cutting a level's faces into tiles: a grid over the input's bounding box, its cell the largest
+// (a power of two of 1/64 of the box) whose fullest cell still fits the tile budget, shifted by
+// half a cell on even levels so that the previous level's borders fall inside tiles. A face
+// belongs to the tile of its centroid. A vertex used by two tiles is locked in both, and so are
+// the other corners of its faces: removing a vertex never adds an edge at a tile border, so
+// tiles cannot disagree there, and a watertight input joins without a crack.
+#pragma once
+
+#include <cstdint>
+#include <functional>
+#include <string>
+
+#include "tile_files.h"
+
+namespace vrs::tiled {
+
+struct Box {
+  float lo[3], hi[3];
+};
+
+// Hands every face of the level to the callback, in a fixed order (the output does not
+// depend on who runs what).
+using FaceSource = std::function<void(const std::function<void(const FaceRecord&)>&)>;
+
+// Writes L<level>/<tile>.in for every non-empty tile; returns the number of tiles.
+uint64_t partition(const std::string& dir, int level, uint64_t vertex_count, const Box& box,
+                   uint64_t faces_per_tile, const FaceSource& source);
+
+} // namespace vrs::tiled

@@ -1,0 +1,59 @@
+// The files a tiled run keeps in its work directory, and how they are written: every file is
+// written under a temporary name and renamed when complete, so a killed worker leaves either
+// nothing or a whole file (a re-run of its tile simply writes it again).
+//   vertices.bin        the input's positions, float xyz, in input order (for the output)
+//   faces.bin           the input's triangles, uint32 x3 (level 1 reads it)
+//   state               the run's settings and where it stands (key value lines)
+//   L<level>/<tile>.in  one tile's faces as records (below), vertices locked where marked
+//   L<level>/<tile>.out the tile simplified, as records
+#pragma once
+
+#include <cstdint>
+#include <cstdio>
+#include <functional>
+#include <map>
+#include <string>
+#include <vector>
+
+namespace vrs::tiled {
+
+// A face with its corners' global (input) vertex ids and positions: a tile needs nothing else.
+struct FaceRecord {
+  uint32_t v[3];
+  float p[3][3];
+  uint8_t locked; // bit c: corner c's vertex is locked in this tile (a border, or next to one)
+  uint8_t pad[3];
+};
+static_assert(sizeof(FaceRecord) == 52, "records are written as they are");
+
+// Buffered writer to `path`, visible under that name only after commit().
+class RecordWriter {
+ public:
+  explicit RecordWriter(std::string path);
+  ~RecordWriter(); // without commit: the temporary is removed
+  RecordWriter(const RecordWriter&) = delete;
+  RecordWriter& operator=(const RecordWriter&) = delete;
+  void write(const void* data, size_t bytes);
+  void commit(); // throws on a write error (a full disk)
+  const std::string& path() const { return path_; }
+
+ private:
+  std::string path_, tmp_;
+  std::FILE* f_ = nullptr;
+};
+
+// Calls fn for each record of the file; throws if it cannot be read whole.
+void for_each_record(const std::string& path, const std::function<void(const FaceRecord&)>& fn);
+uint64_t record_count(const std::string& path);
+
+// The state file: ordered key -> value text.
+using State = std::map<std::string, std::string>;
+State read_state(const std::string& dir);
+void write_state(const std::string& dir, const State& s);
+double state_number(const State& s, const std::string& key);
+
+std::string tile_path(const std::string& dir, int level, size_t tile, const char* ext);
+void make_dir(const std::string& path); // throws with the reason
+void remove_tree(const std::string& path);
+
+} // namespace vrs::tiled

@@ -1,0 +1,103 @@
+#include "tiled_run.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <cstdlib>
+#include <cstring>
+#include <stdexcept>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include <sys/stat.h>
+#include <unistd.h>
+
+#include "vrs/tiled.h"
+
+namespace vrs_tool {
+
+uint64_t estimate_faces(const std::string& path) {
+  std::FILE* f = std::fopen(path.c_str(), "rb");
+  if (!f) return 0;
+  char line[512];
+  uint64_t faces = 0;
+  bool ply = std::fgets(line, sizeof line, f) && std::strncmp(line, "ply", 3) == 0;
+  while (ply && std::fgets(line, sizeof line, f) && std::strncmp(line, "end_header", 10) != 0) {
+    unsigned long long n;
+    if (std::sscanf(line, "element face %llu", &n) == 1) faces = n;
+  }
+  std::fclose(f);
+  struct stat st;
+  if (!ply && stat(path.c_str(), &st) == 0) faces = uint64_t(st.st_size) / 30; // OBJ, ascii
+  return faces;
+}
+
+namespace {
+
+// The Dask driver lives in the Python package; the console script tells where its Python is.
+int run_on_dask(const TiledRequest& r) {
+  const char* python = std::getenv("VRS_PYTHON");
+  if (!python || !*python) python = "python3";
+  std::string ratio = std::to_string(r.ratio), memory = std::to_string(r.memory);
+  std::vector<const char*> args = {python, "-m", "vrsimplify.tiled", r.input.c_str(),
+                                   r.output.c_str(), "--ratio", ratio.c_str(), "--scheduler",
+                                   r.scheduler.c_str()};
+  if (r.memory) args.insert(args.end(), {"--memory", memory.c_str()});
+  if (!r.workdir.empty()) args.insert(args.end(), {"--work-dir", r.workdir.c_str()});
+  args.push_back(nullptr);
+  execvp(python, const_cast<char* const*>(args.data()));
+  std::fprintf(stderr, "vrsimplify: --scheduler needs the Python package (pip install vrsimplify "
+                       "dask distributed): cannot run %s\n", python);
+  return 1;
+}
+
+} // namespace
+
+int run_tiled(const TiledRequest& r) {
+  if (!r.scheduler.empty()) return run_on_dask(r);
+  using clock = std::chrono::steady_clock;
+  const auto t0 = clock::now();
+  const int workers = r.workers > 0 ? r.workers : int(std::max(1u, std::thread::hardware_concurrency()));
+  std::string dir = r.workdir;
+  if (dir.empty()) dir = r.output + ".vrs-tiles";
+  vrs::tiled::Settings s;
+  s.ratio = r.ratio;
+  s.faces_per_tile = vrs::tiled::faces_for_memory(r.memory, workers);
+  s.workdir = dir;
+  int levels = 0;
+  uint64_t input_faces = 0, output_faces = 0;
+  try {
+    vrs::tiled::Level level = vrs::tiled::begin(r.input, s);
+    input_faces = level.faces;
+    while (level.tiles > 0) {
+      vrs::tiled::run_level_locally(dir, level, workers, r.progress);
+      ++levels;
+      level = vrs::tiled::next_level(dir);
+    }
+    output_faces = vrs::tiled::finish(dir, r.output);
+  } catch (const std::exception& e) {
+    if (!r.keep_workdir) vrs::tiled::discard(dir);
+    std::fprintf(stderr, "vrsimplify: %s\n", e.what());
+    return 1;
+  }
+  if (!r.keep_workdir) vrs::tiled::discard(dir);
+  const double seconds = std::chrono::duration<double>(clock::now() - t0).count();
+  const uint64_t target = uint64_t(r.ratio * double(input_faces));
+  if (r.json)
+    std::printf("{\"ok\":true,\"tiled\":true,\"input_faces\":%llu,\"output_faces\":%llu,"
+                "\"target_faces\":%llu,\"levels\":%d,\"workers\":%d,\"faces_per_tile\":%llu,"
+                "\"seconds_total\":%.6f}\n",
+                (unsigned long long)input_faces, (unsigned long long)output_faces,
+                (unsigned long long)target, levels, workers,
+                (unsigned long long)s.faces_per_tile, seconds);
+  else
+    std::printf("tiled:   %llu -> %llu faces (target %llu) in %d levels on %d processes, "
+                "tiles of up to %llu faces, %.3f s\n",
+                (unsigned long long)input_faces, (unsigned long long)output_faces,
+                (unsigned long long)target, levels, workers, (unsigned long long)s.faces_per_tile,
+                seconds);
+  return 0;
+}
+
+} // namespace vrs_tool
