@@ -40,15 +40,17 @@ int run_on_dask(const TiledRequest& r) {
   const char* python = std::getenv("VRS_PYTHON");
   if (!python || !*python) python = "python3";
   std::string ratio = std::to_string(r.ratio), memory = std::to_string(r.memory);
-  std::vector<const char*> args = {python, "-m", "vrsimplify.tiled", r.input.c_str(),
-                                   r.output.c_str(), "--ratio", ratio.c_str(), "--scheduler",
-                                   r.scheduler.c_str()};
+  std::vector<const char*> args = {
+      python,    "-m",          "vrsimplify.tiled", r.input.c_str(),    r.output.c_str(),
+      "--ratio", ratio.c_str(), "--scheduler",      r.scheduler.c_str()};
   if (r.memory) args.insert(args.end(), {"--memory", memory.c_str()});
   if (!r.workdir.empty()) args.insert(args.end(), {"--work-dir", r.workdir.c_str()});
   args.push_back(nullptr);
   execvp(python, const_cast<char* const*>(args.data()));
-  std::fprintf(stderr, "vrsimplify: --scheduler needs the Python package (pip install vrsimplify "
-                       "dask distributed): cannot run %s\n", python);
+  std::fprintf(stderr,
+               "vrsimplify: --scheduler needs the Python package (pip install vrsimplify "
+               "dask distributed): cannot run %s\n",
+               python);
   return 1;
 }
 
@@ -58,12 +60,14 @@ int run_tiled(const TiledRequest& r) {
   if (!r.scheduler.empty()) return run_on_dask(r);
   using clock = std::chrono::steady_clock;
   const auto t0 = clock::now();
-  const int workers = r.workers > 0 ? r.workers : int(std::max(1u, std::thread::hardware_concurrency()));
+  const int workers =
+      std::min(vrs::tiled::kTilesInMemory,
+               r.workers > 0 ? r.workers : int(std::max(1u, std::thread::hardware_concurrency())));
   std::string dir = r.workdir;
   if (dir.empty()) dir = r.output + ".vrs-tiles";
   vrs::tiled::Settings s;
   s.ratio = r.ratio;
-  s.faces_per_tile = vrs::tiled::faces_for_memory(r.memory, workers);
+  s.faces_per_tile = vrs::tiled::faces_for_memory(r.memory);
   s.workdir = dir;
   int levels = 0;
   uint64_t input_faces = 0, output_faces = 0;
@@ -89,8 +93,8 @@ int run_tiled(const TiledRequest& r) {
                 "\"target_faces\":%llu,\"levels\":%d,\"workers\":%d,\"faces_per_tile\":%llu,"
                 "\"seconds_total\":%.6f}\n",
                 (unsigned long long)input_faces, (unsigned long long)output_faces,
-                (unsigned long long)target, levels, workers,
-                (unsigned long long)s.faces_per_tile, seconds);
+                (unsigned long long)target, levels, workers, (unsigned long long)s.faces_per_tile,
+                seconds);
   else
     std::printf("tiled:   %llu -> %llu faces (target %llu) in %d levels on %d processes, "
                 "tiles of up to %llu faces, %.3f s\n",

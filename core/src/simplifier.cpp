@@ -67,7 +67,7 @@ template <class Queue> void Simplifier::run(Queue& queue) {
       rep_.stop = StopReason::TargetReached;
       break;
     }
-    if (queue.empty() && counts && relax(queue)) continue;
+    if (queue.empty() && counts && opt_.relax_to_reach_target && relax(queue)) continue;
     if (queue.empty()) {
       // With a finite error bound that refused removals, the bound is what stopped the run.
       const bool bounded = std::isfinite(opt_.max_error) && rep_.rejected[RejectBound] > 0;

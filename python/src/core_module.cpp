@@ -223,6 +223,8 @@ nb::tuple simplify(AnyArray vertices, AnyArray faces, const std::string& target_
 
 } // namespace
 
+void register_tiled(nb::module_& m); // tiled_module.cpp
+
 NB_MODULE(_core, m) {
   m.doc() = "vrsimplify's C++ core (use vrsimplify.simplify)";
   m.attr("__version__") = VRS_VERSION;
@@ -236,6 +238,7 @@ NB_MODULE(_core, m) {
       throw nb::value_error("unknown stop reason");
     return vrs::stop_reason_name(vrs::StopReason(code));
   });
+  register_tiled(m);
   m.def("bounding_box_diagonal", [](AnyArray vertices) {
     vrs::Mesh mesh;
     mesh.positions = read_positions(vertices);

@@ -9,6 +9,8 @@ def main() -> None:
     if not exe.is_file():
         sys.exit("vrsimplify: this package was built without the command-line tool "
                  "(vcglib was not found at build time; scripts/setup.sh fetches it)")
+    # --scheduler hands the run to this package's Dask driver, with this Python.
+    os.environ.setdefault("VRS_PYTHON", sys.executable)
     os.execv(exe, [str(exe), *sys.argv[1:]])  # same process: exit code and signals as the tool's
 
 

@@ -13,9 +13,9 @@
 
 namespace vrs::tiled {
 
-void run_level_locally(const std::string& workdir, const Level& level, int workers,
-                       bool progress) {
-  workers = int(std::max<uint64_t>(1, std::min<uint64_t>(uint64_t(std::max(workers, 1)), level.tiles)));
+void run_level_locally(const std::string& workdir, const Level& level, int workers, bool progress) {
+  workers = int(std::max<uint64_t>(1, std::min<uint64_t>({uint64_t(std::max(workers, 1)),
+                                                          uint64_t(kTilesInMemory), level.tiles})));
   if (progress)
     std::fprintf(stderr, "level %d: %llu faces in %llu tiles on %d processes, keeping %.3g\n",
                  level.level, (unsigned long long)level.faces, (unsigned long long)level.tiles,

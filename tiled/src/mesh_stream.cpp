@@ -13,7 +13,8 @@ namespace {
 bool ends_with(std::string s, const std::string& suffix) {
   for (char& c : s)
     c = char(std::tolower((unsigned char)c));
-  return s.size() >= suffix.size() && s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
+  return s.size() >= suffix.size() &&
+         s.compare(s.size() - suffix.size(), suffix.size(), suffix) == 0;
 }
 
 bool read_line(std::FILE* in, std::string& line) {
@@ -104,12 +105,42 @@ struct PlyReader {
     switch (t) {
     case Type::Int8: out = double(int8_t(b[0])); break;
     case Type::UInt8: out = double(b[0]); break;
-    case Type::Int16: { int16_t v; std::memcpy(&v, b, 2); out = v; break; }
-    case Type::UInt16: { uint16_t v; std::memcpy(&v, b, 2); out = v; break; }
-    case Type::Int32: { int32_t v; std::memcpy(&v, b, 4); out = v; break; }
-    case Type::UInt32: { uint32_t v; std::memcpy(&v, b, 4); out = v; break; }
-    case Type::Float32: { float v; std::memcpy(&v, b, 4); out = v; break; }
-    case Type::Float64: { double v; std::memcpy(&v, b, 8); out = v; break; }
+    case Type::Int16: {
+      int16_t v;
+      std::memcpy(&v, b, 2);
+      out = v;
+      break;
+    }
+    case Type::UInt16: {
+      uint16_t v;
+      std::memcpy(&v, b, 2);
+      out = v;
+      break;
+    }
+    case Type::Int32: {
+      int32_t v;
+      std::memcpy(&v, b, 4);
+      out = v;
+      break;
+    }
+    case Type::UInt32: {
+      uint32_t v;
+      std::memcpy(&v, b, 4);
+      out = v;
+      break;
+    }
+    case Type::Float32: {
+      float v;
+      std::memcpy(&v, b, 4);
+      out = v;
+      break;
+    }
+    case Type::Float64: {
+      double v;
+      std::memcpy(&v, b, 8);
+      out = v;
+      break;
+    }
     default: return false;
     }
     return true;
@@ -130,7 +161,7 @@ std::string read_ply(std::FILE* in, const StreamSink& sink) {
     if (w == "end_header") break;
     if (w == "format") {
       const std::string f = a;
-      enc = f == "ascii" ? Encoding::Ascii
+      enc = f == "ascii"                  ? Encoding::Ascii
             : f == "binary_little_endian" ? Encoding::Little
             : f == "binary_big_endian"    ? Encoding::Big
                                           : Encoding(-1);
@@ -187,7 +218,8 @@ std::string read_ply(std::FILE* in, const StreamSink& sink) {
         const Property& p = e.props[i];
         double v;
         if (!p.list) {
-          if (!r.value(p.type, v)) return "truncated or malformed PLY " + e.name + " " + std::to_string(k);
+          if (!r.value(p.type, v))
+            return "truncated or malformed PLY " + e.name + " " + std::to_string(k);
           for (int a = 0; a < 3; ++a)
             if (int(i) == xyz[a]) p3[a] = float(v);
           continue;
@@ -197,7 +229,8 @@ std::string read_ply(std::FILE* in, const StreamSink& sink) {
           return "truncated or malformed PLY " + e.name + " " + std::to_string(k);
         if (int(i) == indices) poly.clear();
         for (int64_t j = 0; j < int64_t(count); ++j) {
-          if (!r.value(p.type, v)) return "truncated or malformed PLY " + e.name + " " + std::to_string(k);
+          if (!r.value(p.type, v))
+            return "truncated or malformed PLY " + e.name + " " + std::to_string(k);
           if (int(i) == indices) poly.push_back(int64_t(v));
         }
       }
@@ -225,7 +258,8 @@ std::string read_obj(std::FILE* in, const StreamSink& sink) {
   while (read_line(in, line)) {
     ++line_no;
     const char* s = line.c_str();
-    while (*s == ' ' || *s == '\t') ++s;
+    while (*s == ' ' || *s == '\t')
+      ++s;
     if (s[0] == 'v' && (s[1] == ' ' || s[1] == '\t')) {
       float p[3];
       char* end = const_cast<char*>(s + 1);
@@ -240,16 +274,19 @@ std::string read_obj(std::FILE* in, const StreamSink& sink) {
       poly.clear();
       const char* c = s + 1;
       for (;;) {
-        while (*c == ' ' || *c == '\t') ++c;
+        while (*c == ' ' || *c == '\t')
+          ++c;
         if (!*c) break;
         char* end = nullptr;
         long long i = std::strtoll(c, &end, 10);
         if (end == c || i == 0) return "line " + std::to_string(line_no) + ": bad face";
         poly.push_back(i > 0 ? int64_t(i) - 1 : int64_t(vertices) + i);
         c = end;
-        while (*c && *c != ' ' && *c != '\t') ++c; // skip /vt/vn
+        while (*c && *c != ' ' && *c != '\t')
+          ++c; // skip /vt/vn
       }
-      if (poly.size() < 3) return "line " + std::to_string(line_no) + ": face with fewer than 3 corners";
+      if (poly.size() < 3)
+        return "line " + std::to_string(line_no) + ": face with fewer than 3 corners";
       for (size_t j = 2; j < poly.size(); ++j) {
         const int64_t t[3] = {poly[0], poly[j - 1], poly[j]};
         sink.triangle(t);

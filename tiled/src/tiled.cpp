@@ -95,7 +95,8 @@ Level begin(const std::string& input, const Settings& settings) {
       vout.write(p, 12);
       ++vertices;
       for (int a = 0; a < 3; ++a)
-        if (std::isfinite(p[a])) box.lo[a] = std::min(box.lo[a], p[a]), box.hi[a] = std::max(box.hi[a], p[a]);
+        if (std::isfinite(p[a]))
+          box.lo[a] = std::min(box.lo[a], p[a]), box.hi[a] = std::max(box.hi[a], p[a]);
     };
     sink.triangle = [&](const int64_t v[3]) {
       uint32_t t[3];
@@ -143,8 +144,8 @@ Level begin(const std::string& input, const Settings& settings) {
     const size_t got = f ? std::fread(positions.data(), 12, vertices, f) : 0;
     if (f) std::fclose(f);
     if (got != vertices) throw std::runtime_error("cannot read back " + dir + "/vertices.bin");
-    s["tiles"] = num(double(partition(dir, 1, vertices, box, settings.faces_per_tile,
-                                      input_faces(dir, positions))));
+    s["tiles"] = num(double(
+        partition(dir, 1, vertices, box, settings.faces_per_tile, input_faces(dir, positions))));
   }
   write_state(dir, s);
   return level_of(s);
@@ -154,7 +155,8 @@ void run_tile(const std::string& dir, int level, uint64_t tile) {
   const State s = read_state(dir);
   const double ratio = state_number(s, "ratio");
   std::vector<FaceRecord> in;
-  for_each_record(tile_path(dir, level, tile, ".in"), [&](const FaceRecord& r) { in.push_back(r); });
+  for_each_record(tile_path(dir, level, tile, ".in"),
+                  [&](const FaceRecord& r) { in.push_back(r); });
   // Global ids -> local ones (sorted: the tile's mesh does not depend on the file's order).
   std::vector<uint32_t> ids;
   ids.reserve(3 * in.size());
@@ -162,7 +164,9 @@ void run_tile(const std::string& dir, int level, uint64_t tile) {
     ids.insert(ids.end(), r.v, r.v + 3);
   std::sort(ids.begin(), ids.end());
   ids.erase(std::unique(ids.begin(), ids.end()), ids.end());
-  auto local = [&](uint32_t v) { return uint32_t(std::lower_bound(ids.begin(), ids.end(), v) - ids.begin()); };
+  auto local = [&](uint32_t v) {
+    return uint32_t(std::lower_bound(ids.begin(), ids.end(), v) - ids.begin());
+  };
   vrs::Mesh mesh;
   mesh.positions.resize(3 * ids.size());
   mesh.triangles.resize(3 * in.size());
@@ -174,16 +178,23 @@ void run_tile(const std::string& dir, int level, uint64_t tile) {
       std::memcpy(&mesh.positions[3 * size_t(l)], in[f].p[c], 12);
       if (in[f].locked >> c & 1) locked[l] = 1;
     }
-  // The level's ratio applies to the faces the tile may change: asking the faces along its
-  // locked border to go too would only drive the core to its last resort (relaxed vetoes)
-  // elsewhere in the tile. The next level, shifted, releases them.
+  // On the first two levels the ratio applies to the faces the tile may change: asking the
+  // faces along its locked border to go too makes the rest of the tile go further than the
+  // target asks (measured: +21 % mean error at 10 % on 1.2 M faces); the next level, shifted,
+  // releases them. From the third level on (small remainders, coarser tiles) a tile goes as
+  // far as the level's ratio of all its faces, without the core's last resort, so that the
+  // run converges.
   uint64_t bordering = 0;
   for (const FaceRecord& r : in)
     bordering += r.locked != 0;
   in = {};
   vrs::Options opt;
   opt.target.kind = vrs::TargetKind::Faces;
-  opt.target.faces = size_t(bordering + uint64_t(std::llround(ratio * double(mesh.face_count() - bordering))));
+  const double faces = double(mesh.face_count());
+  opt.target.faces =
+      level <= 2 ? size_t(double(bordering) + std::round(ratio * (faces - double(bordering))))
+                 : size_t(std::round(ratio * faces));
+  opt.relax_to_reach_target = false;
   opt.locked = &locked;
   opt.threads = 1; // tiles run side by side, each on one core
   const vrs::Report rep = vrs::simplify(mesh, opt);
@@ -259,9 +270,11 @@ uint64_t finish(const std::string& dir, const std::string& output) {
   char line[128];
   if (!obj) {
     const std::string header = "ply\nformat binary_little_endian 1.0\ncomment vrsimplify, tiled\n"
-                               "element vertex " + std::to_string(next) +
+                               "element vertex " +
+                               std::to_string(next) +
                                "\nproperty float x\nproperty float y\nproperty float z\n"
-                               "element face " + std::to_string(face_count) +
+                               "element face " +
+                               std::to_string(face_count) +
                                "\nproperty list uchar int vertex_indices\nend_header\n";
     out.write(header.data(), header.size());
   }
@@ -284,8 +297,8 @@ uint64_t finish(const std::string& dir, const std::string& output) {
   std::fclose(f);
   faces([&](const FaceRecord& r) {
     if (obj) {
-      const int len = std::snprintf(line, sizeof line, "f %u %u %u\n", index[r.v[0]],
-                                    index[r.v[1]], index[r.v[2]]);
+      const int len = std::snprintf(line, sizeof line, "f %u %u %u\n", index[r.v[0]], index[r.v[1]],
+                                    index[r.v[2]]);
       out.write(line, size_t(len));
     } else {
       unsigned char rec[13];
@@ -305,10 +318,10 @@ void discard(const std::string& workdir) {
   remove_tree(workdir);
 }
 
-uint64_t faces_for_memory(uint64_t bytes, int workers) {
+uint64_t faces_for_memory(uint64_t bytes) {
   // A tile in core: the core's mesh and state (~85 bytes a face at 19 M faces), its records
   // while read (52) and the id sort (12), with room to spare.
-  return bytes / uint64_t(std::max(1, workers)) / 200;
+  return bytes / kTilesInMemory / 200;
 }
 
 bool fits_in_core(uint64_t faces, uint64_t bytes) {
@@ -320,12 +333,12 @@ uint64_t parse_memory(const std::string& text) {
   const double v = std::strtod(text.c_str(), &end);
   if (!end || end == text.c_str() || !(v > 0)) return 0;
   const std::string unit = end;
-  const double scale = unit == "" || unit == "B"            ? 1.0
+  const double scale = unit == "" || unit == "B"                      ? 1.0
                        : unit == "K" || unit == "KB" || unit == "KiB" ? 1024.0
                        : unit == "M" || unit == "MB" || unit == "MiB" ? 1048576.0
                        : unit == "G" || unit == "GB" || unit == "GiB" ? 1073741824.0
                        : unit == "T" || unit == "TB" || unit == "TiB" ? 1099511627776.0
-                                                                       : 0.0;
+                                                                      : 0.0;
   return uint64_t(v * scale);
 }
 

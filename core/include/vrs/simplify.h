@@ -129,6 +129,10 @@ struct Options {
   // Report::error_bound. +inf tracks and reports the bound without limiting anything. The
   // tracking costs a float a face and a polygon overlay per plan; it runs only when asked.
   double max_error = 0.0;
+  // When the vetoes stop short of a count target, lift some of them to reach it (the last
+  // resort, see Report::relaxed_removals). False: stop there instead (stop NoCandidates);
+  // tiled runs do, since a later level over other tiles finishes the work.
+  bool relax_to_reach_target = true;
   // Fill Report::corner_source, so that per-corner data (texture coordinates, normals, colors
   // stored per face corner) can follow the simplification. Costs 12 bytes a face.
   bool corner_sources = false;

@@ -19,16 +19,16 @@ namespace vrs::tiled {
 
 struct Settings {
   double ratio = 0.5;                // of the input's faces
-  uint64_t faces_per_tile = 2000000; // largest tile, from the memory budget (faces_for_memory)
+  uint64_t faces_per_tile = 2000000; // largest tile (faces_for_memory of the budget)
   std::string workdir;               // made if missing; must be writable
 };
 
 struct Level {
-  int level = 0;          // 1, 2, ...
-  uint64_t tiles = 0;     // tiles to run at this level; 0 once the run is done
-  uint64_t faces = 0;     // faces entering the level
-  uint64_t target = 0;    // faces wanted in the end
-  double ratio = 1.0;     // what each tile keeps at this level
+  int level = 0;       // 1, 2, ...
+  uint64_t tiles = 0;  // tiles to run at this level; 0 once the run is done
+  uint64_t faces = 0;  // faces entering the level
+  uint64_t target = 0; // faces wanted in the end
+  double ratio = 1.0;  // what each tile keeps at this level
 };
 
 // Streams `input` (.ply ascii or binary, .obj) into the work directory and cuts level 1.
@@ -45,15 +45,18 @@ uint64_t finish(const std::string& workdir, const std::string& output);
 // Removes the work directory and everything in it.
 void discard(const std::string& workdir);
 
-// Faces a tile may hold for `bytes` of memory shared by `workers` processes (each holds one
-// tile at a time), and whether a mesh of `faces` is better run in core within `bytes`.
-uint64_t faces_for_memory(uint64_t bytes, int workers);
+// Faces a tile may hold for a memory budget of `bytes`: a quarter of it, so that up to
+// kTilesInMemory tiles run at once within it. The tiles, and so the output, depend on the
+// budget only, never on how many workers run them. And whether a mesh of `faces` is better
+// run in core within `bytes`.
+constexpr int kTilesInMemory = 4;
+uint64_t faces_for_memory(uint64_t bytes);
 bool fits_in_core(uint64_t faces, uint64_t bytes);
 // "2G", "512M", "1.5G", "800000K" -> bytes; 0 when unreadable.
 uint64_t parse_memory(const std::string& text);
 
-// Runs every tile of `level` on `workers` local processes (fork): the embedded default.
-void run_level_locally(const std::string& workdir, const Level& level, int workers,
-                       bool progress);
+// Runs every tile of `level` on `workers` local processes (fork; at most kTilesInMemory): the
+// embedded default.
+void run_level_locally(const std::string& workdir, const Level& level, int workers, bool progress);
 
 } // namespace vrs::tiled

@@ -1,0 +1,118 @@
+"""Meshes bigger than memory: tiled, out-of-core runs, on local processes or a Dask cluster.
+
+    import vrsimplify.tiled
+    vrsimplify.tiled.simplify("scan.ply", "scan-1.ply", ratio=0.01, memory="2G")
+    # on a cluster: every worker needs this package and the work directory
+    from dask.distributed import Client
+    vrsimplify.tiled.simplify("scan.ply", "scan-1.ply", ratio=0.01, memory="2G",
+                              client=Client("tcp://scheduler:8786"), workdir="/shared/tiles")
+
+The input (.ply ascii or binary, .obj) is streamed once into the work directory and cut into
+spatial tiles; each tile is a task that simplifies it with its border locked; further levels
+over shifted tiles release the borders until the target is met; the output (.ply binary or
+.obj, positions only) joins the tiles by input vertex id and is the same whoever ran the
+tiles. Command line: ``python -m vrsimplify.tiled IN OUT --ratio R [--scheduler ADDRESS]
+[--memory 2G] [--work-dir DIR]`` (what ``vrsimplify --scheduler`` runs).
+"""
+from __future__ import annotations
+
+import argparse
+import os
+import sys
+import time
+from typing import Optional, Union
+
+from . import _core
+
+__all__ = ["simplify"]
+
+
+def _run_tile(workdir: str, level: int, tile: int) -> int:
+    """One Dask task: a tile, written atomically (a retried task rewrites it whole)."""
+    from vrsimplify import _core as core  # imported in the worker process
+    core.tiled_run_tile(workdir, level, tile)
+    return tile
+
+
+def simplify(src: Union[str, os.PathLike], dst: Union[str, os.PathLike], *, ratio: float,
+             memory: Union[str, int] = "2G", client=None, workdir: Optional[str] = None,
+             workers: int = 0, retries: int = 2, progress: bool = False,
+             keep_workdir: bool = False) -> dict:
+    """Simplifies the file `src` to `ratio` of its faces into `dst`, in tiles.
+
+    memory: the budget a tile is cut for ("2G", "512M" or bytes); a tile takes a quarter of
+    it. The tiles, and so the output, depend on it alone, not on who runs them.
+    client: a dask.distributed Client: tiles become its tasks (retried `retries` times if a
+    worker dies); without one they run on `workers` local processes (0: the cores, at most 4).
+    workdir: where the tile files go (default: `dst` + ".vrs-tiles"); with a client, a path
+    every worker can reach. Removed afterwards unless keep_workdir.
+    Returns counts and times; raises ValueError with the reason (a malformed file, a full disk,
+    an unwritable work directory) and leaves no output file behind.
+    """
+    src, dst = os.fspath(src), os.fspath(dst)
+    budget = memory if isinstance(memory, int) else _core.tiled_parse_memory(str(memory))
+    if not budget:
+        raise ValueError(f"memory must be a size such as 512M or 2G, got {memory!r}")
+    workdir = os.fspath(workdir) if workdir else dst + ".vrs-tiles"
+    if "://" in workdir:
+        raise ValueError("the work directory must be a file system path every worker can reach "
+                         f"(a shared mount); URLs are not supported: {workdir}")
+    t0 = time.perf_counter()
+    levels = []
+    try:
+        level = _core.tiled_begin(src, workdir, float(ratio), _core.tiled_faces_for_memory(budget))
+        input_faces = level["faces"]
+        while level["tiles"]:
+            t = time.perf_counter()
+            if client is None:
+                _core.tiled_run_level_locally(workdir, level, int(workers), bool(progress))
+            else:
+                if progress:
+                    print(f"level {level['level']}: {level['tiles']} tiles on Dask",
+                          file=sys.stderr)
+                n = level["tiles"]
+                futures = client.map(_run_tile, [workdir] * n, [level["level"]] * n, range(n),
+                                     pure=False, retries=retries)
+                client.gather(futures)
+            levels.append({**level, "seconds": time.perf_counter() - t})
+            level = _core.tiled_next_level(workdir)
+        output_faces = _core.tiled_finish(workdir, dst)
+    finally:
+        if not keep_workdir:
+            _core.tiled_discard(workdir)
+    return {"input_faces": input_faces, "output_faces": output_faces,
+            "target_faces": int(ratio * input_faces), "levels": levels,
+            "faces_per_tile": _core.tiled_faces_for_memory(budget),
+            "seconds": time.perf_counter() - t0}
+
+
+def main(argv=None) -> int:
+    p = argparse.ArgumentParser(prog="python -m vrsimplify.tiled", description=__doc__.split("\n\n")[0])
+    p.add_argument("input")
+    p.add_argument("output")
+    p.add_argument("--ratio", type=float, required=True)
+    p.add_argument("--memory", default="2G")
+    p.add_argument("--scheduler", help="a Dask scheduler's address (tcp://host:8786)")
+    p.add_argument("--work-dir")
+    p.add_argument("--workers", type=int, default=0)
+    args = p.parse_args(argv)
+    client = None
+    if args.scheduler:
+        from dask.distributed import Client
+        client = Client(args.scheduler)
+    try:
+        r = simplify(args.input, args.output, ratio=args.ratio, memory=args.memory, client=client,
+                     workdir=args.work_dir, workers=args.workers, progress=True)
+    except ValueError as e:
+        print(f"vrsimplify: {e}", file=sys.stderr)
+        return 1
+    finally:
+        if client is not None:
+            client.close()
+    print(f"tiled:   {r['input_faces']} -> {r['output_faces']} faces (target {r['target_faces']}) "
+          f"in {len(r['levels'])} levels, {r['seconds']:.3f} s")
+    return 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
