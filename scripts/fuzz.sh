@@ -1,6 +1,7 @@
 #!/usr/bin/env bash
 # Fuzzes the core with libFuzzer (clang 14, ASan + UBSan) for SECONDS (default 600): builds
-# build/fuzz/, makes the seed corpus from the shipped meshes and CGAL's small ones, runs.
+# build/fuzz/, makes the seed corpus from the shipped meshes and CGAL's small ones, runs; then
+# the tiled runs' streaming readers (PLY, OBJ) for a quarter of that, seeded with small files.
 # A finding is written to build/fuzz/findings/ and the script fails; copy it to
 # fuzz/regressions/ (with a name that says what it was) once fixed, and the tests keep it.
 #   scripts/fuzz.sh [SECONDS]
@@ -11,7 +12,7 @@ top=$(cd "$(dirname "$0")/.." && pwd)
 b=$top/build/fuzz
 cmake -S "$top" -B "$b" -DCMAKE_CXX_COMPILER=clang++-14 -DCMAKE_BUILD_TYPE=RelWithDebInfo \
   -DVRS_SANITIZE=ON -DVRS_BUILD_FUZZ=ON -DVRS_BUILD_TOOLS=OFF >/dev/null
-cmake --build "$b" -j "$(nproc)" --target vrs_fuzz vrs_fuzz_seeds >/dev/null
+cmake --build "$b" -j "$(nproc)" --target vrs_fuzz vrs_fuzz_seeds vrs_fuzz_stream >/dev/null
 mkdir -p "$b/seeds" "$b/corpus" "$b/findings"
 data=$top/third_party/cgal-data/data/meshes
 # shellcheck disable=SC2046
@@ -26,4 +27,21 @@ echo "fuzz: ${seconds} s, corpus $b/corpus, seeds $b/seeds"
 }
 grep -E "stat::number_of_executed_units|stat::peak_rss_mb" "$b/fuzz.log"
 grep -E "^#[0-9]+.*(DONE|pulse)" "$b/fuzz.log" | tail -1
+
+# The streaming readers: seeds are small PLY (ascii, binary) and OBJ files, a first byte each
+# saying which reader (even: PLY, odd: OBJ).
+s=$b/stream-seeds
+mkdir -p "$s" "$b/stream-corpus"
+{ printf '\0'; head -c 3000 "$top/meshes/mushroom.off" | sed '1d' | awk 'BEGIN { print "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2" }'; } >"$s/ascii.ply"
+{ printf '\0'; printf 'ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n'
+  head -c 36 /dev/zero; printf '\003\000\000\000\000\001\000\000\000\002\000\000\000'; } >"$s/binary.ply"
+{ printf '\1'; printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 1\nvt 0 0\nf 1/1 2/1 3/1 4/1\nf -1 -2 -3\n'; } >"$s/quad.obj"
+stream_seconds=$(( seconds / 4 > 10 ? seconds / 4 : 10 ))
+"$b/bin/vrs_fuzz_stream" -max_total_time="$stream_seconds" -max_len=4096 -timeout=5 -rss_limit_mb=2048 \
+  -print_final_stats=1 -artifact_prefix="$b/findings/" "$b/stream-corpus" "$s" 2>"$b/fuzz-stream.log" || {
+  grep -E "ERROR|runtime error" "$b/fuzz-stream.log" | head -5
+  echo "fuzz: a finding in the streaming readers, see $b/findings/ and $b/fuzz-stream.log"
+  exit 1
+}
+echo "fuzz (streaming readers): $(grep -E "stat::number_of_executed_units" "$b/fuzz-stream.log" | awk '{print $2}') executions in ${stream_seconds} s"
 echo "fuzz: no finding"

@@ -168,5 +168,21 @@ awk 'NR == 2 { nv = $1 } NR > 2 + nv && NF == 4 && (++f % 3 == 0) { print $1, $2
   [ "$(json_num "$out/shuffled.json" output_faces)" -le 1295 ] && ok ||
   fail "shuffled orientation: $(cat "$out/shuffled.json" "$out/e")"
 
+# 8. Tiled runs (--memory): a budget the mesh does not fit goes tiled, one it fits stays in core;
+#    a budget that is not a size is a bad call.
+"$bin" "$in" "$out/tiled.ply" --ratio 0.1 --memory 1M --json >"$out/tiled.json" 2>"$out/err" &&
+  grep -q '"tiled":true' "$out/tiled.json" && [ "$(json_num "$out/tiled.json" output_faces)" -le 1301 ] &&
+  [ -s "$out/tiled.ply" ] && [ ! -e "$out/tiled.ply.vrs-tiles" ] && ok ||
+  fail "--memory 1M: $(cat "$out/tiled.json" "$out/err")"
+"$bin" "$out/tiled.ply" "$out/back.ply" --ratio 1 --json >"$out/back.json" 2>>"$out/err" &&
+  [ "$(json_num "$out/back.json" input_faces)" = "$(json_num "$out/tiled.json" output_faces)" ] && ok ||
+  fail "the tiled output does not read back"
+"$bin" "$in" "$out/incore.ply" --ratio 0.1 --memory 2G --json >"$out/incore.json" 2>"$out/err" &&
+  ! grep -q '"tiled"' "$out/incore.json" && ok || fail "--memory 2G did not run in core"
+"$bin" "$in" "$out/x.ply" --memory lots 2>"$out/err"; [ $? -eq 2 ] && grep -q "memory needs a size" "$out/err" && ok ||
+  fail "--memory lots: $(cat "$out/err")"
+"$bin" "$in" "$out/x.ply" --faces 100 --memory 1M 2>"$out/err"; [ $? -eq 2 ] && grep -q "take --ratio only" "$out/err" && ok ||
+  fail "--faces with tiles: $(cat "$out/err")"
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

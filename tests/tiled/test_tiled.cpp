@@ -231,3 +231,17 @@ TEST(Tiled, MemorySizes) {
   EXPECT_EQ(vrs::tiled::parse_memory("-1G"), 0u);
   EXPECT_EQ(vrs::tiled::faces_for_memory(2ull << 30), (2ull << 30) / 4 / 200);
 }
+
+// Every finding of the streaming readers' fuzzer (fuzz/fuzz_stream.cpp), once fixed: read as
+// the fuzzer reads it (first byte: even PLY, odd OBJ), it ends, with or without a message.
+TEST(StreamReaders, FuzzerFindingsEnd) {
+  int files = 0;
+  for (const char* name : {"ply-element-without-properties-and-a-negative-count"}) {
+    const std::string data = slurp(std::string(VRS_STREAM_REGRESSIONS) + "/" + name);
+    ASSERT_FALSE(data.empty()) << name;
+    const Read r = read_bytes(data.substr(1), data[0] & 1 ? "x.obj" : "x.ply");
+    EXPECT_NE(r.error, "") << name;
+    ++files;
+  }
+  EXPECT_EQ(files, 1);
+}

@@ -172,7 +172,7 @@ std::string read_ply(std::FILE* in, const StreamSink& sink) {
       Element e;
       e.name = a;
       e.count = std::strtoull(b, &end, 10);
-      if (n < 3 || !end || *end) return "bad PLY element line: " + line;
+      if (n < 3 || !end || *end || b[0] == '-') return "bad PLY element line: " + line;
       elements.push_back(e);
     } else if (w == "property") {
       if (elements.empty()) return "PLY property before any element";
@@ -212,6 +212,7 @@ std::string read_ply(std::FILE* in, const StreamSink& sink) {
       return "PLY vertices without x, y and z";
     if (is_face && indices < 0) return "PLY faces without vertex_indices";
     std::vector<int64_t> poly;
+    if (e.props.empty()) continue; // nothing to read, however many it claims
     for (uint64_t k = 0; k < e.count; ++k) {
       float p3[3] = {0, 0, 0};
       for (size_t i = 0; i < e.props.size(); ++i) {

@@ -1,0 +1,27 @@
+// libFuzzer target of the tiled runs' streaming readers: any bytes, read as PLY and as OBJ
+// (the first byte picks), must give a message or a stream of vertices and triangles, never a
+// crash, a hang or an allocation the input does not pay for. Cheap per input, so it runs
+// thousands of executions a second (the core's target: ~50).
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+
+#include "mesh_stream.h"
+
+extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
+  if (size == 0) return 0;
+  const std::string name = data[0] & 1 ? "in.obj" : "in.ply";
+  std::FILE* f = fmemopen(const_cast<uint8_t*>(data + 1), size - 1, "rb");
+  if (!f) return 0;
+  uint64_t vertices = 0, triangles = 0;
+  vrs::tiled::StreamSink sink;
+  sink.vertex = [&](const float*) { ++vertices; };
+  sink.triangle = [&](const int64_t*) { ++triangles; };
+  const std::string error = vrs::tiled::read_mesh_stream(f, name, sink);
+  std::fclose(f);
+  // A polygon of k corners makes k - 2 triangles: never more triangles than bytes read.
+  if (triangles > 8 * size + 8) std::abort();
+  (void)error;
+  return 0;
+}
