@@ -170,7 +170,9 @@ TEST(StreamReaders, MalformedFilesSayWhat) {
   EXPECT_NE(read_bytes("solid", "s.ply").error.find("not a PLY"), std::string::npos);
   EXPECT_NE(read_bytes("v 1 2\n", "v.obj").error.find("line 1: bad vertex"), std::string::npos);
   EXPECT_NE(read_bytes("v 0 0 0\nf 1 2\n", "f.obj").error.find("fewer than 3"), std::string::npos);
-  EXPECT_NE(read_bytes("", "x.stl").error.find(".ply or .obj"), std::string::npos);
+  EXPECT_NE(read_bytes("", "x.stl").error.find(".ply, .obj or .off"), std::string::npos);
+  EXPECT_NE(read_bytes("OFF\n3 1 0\n0 0 0\n1 0 0\n", "t.off").error.find("truncated"),
+            std::string::npos);
 }
 
 TEST(Tiled, ClosedMeshInManyTilesStaysWatertightAndKeepsInputVertices) {

@@ -298,12 +298,62 @@ std::string read_obj(std::FILE* in, const StreamSink& sink) {
   return {};
 }
 
+// ---- OFF (ascii) -------------------------------------------------------------------------
+
+std::string read_off(std::FILE* in, const StreamSink& sink) {
+  PlyReader r{in, Encoding::Ascii, "", 0, false}; // its ascii tokenizer, comments dropped below
+  std::string tok;
+  auto number = [&](double& v) {
+    for (;;) {
+      if (!r.next_token(tok)) return false;
+      if (tok[0] != '#') break;
+      r.token_pos = r.token_line.size(); // a comment runs to the end of its line
+    }
+    char* end = nullptr;
+    v = std::strtod(tok.c_str(), &end);
+    return end && *end == '\0';
+  };
+  if (!r.next_token(tok) || (tok != "OFF" && tok != "COFF" && tok != "NOFF"))
+    return "not an ascii OFF file";
+  double nv, nf, ne;
+  if (!number(nv) || !number(nf) || !number(ne) || nv < 0 || nf < 0 || nv > 4e9 || nf > 4e9)
+    return "bad OFF counts";
+  const size_t extra = tok == "COFF" ? 4 : 0; // per-vertex colors after x y z
+  std::vector<int64_t> poly;
+  for (double i = 0; i < nv; ++i) {
+    double p[3];
+    for (double& c : p)
+      if (!number(c)) return "truncated or malformed OFF vertex " + std::to_string(int64_t(i));
+    r.token_pos = r.token_line.size(); // colors, normals: the rest of the line
+    (void)extra;
+    const float f[3] = {float(p[0]), float(p[1]), float(p[2])};
+    sink.vertex(f);
+  }
+  for (double i = 0; i < nf; ++i) {
+    double k, v;
+    if (!number(k) || k < 3 || k > 1e6)
+      return "truncated or malformed OFF face " + std::to_string(int64_t(i));
+    poly.clear();
+    for (int j = 0; j < int(k); ++j) {
+      if (!number(v)) return "truncated or malformed OFF face " + std::to_string(int64_t(i));
+      poly.push_back(int64_t(v));
+    }
+    r.token_pos = r.token_line.size(); // a face color
+    for (size_t j = 2; j < poly.size(); ++j) {
+      const int64_t t[3] = {poly[0], poly[j - 1], poly[j]};
+      sink.triangle(t);
+    }
+  }
+  return {};
+}
+
 } // namespace
 
 std::string read_mesh_stream(std::FILE* in, const std::string& name, const StreamSink& sink) {
   if (ends_with(name, ".ply")) return read_ply(in, sink);
   if (ends_with(name, ".obj")) return read_obj(in, sink);
-  return "streamed input must be .ply or .obj: " + name;
+  if (ends_with(name, ".off")) return read_off(in, sink);
+  return "streamed input must be .ply, .obj or .off: " + name;
 }
 
 } // namespace vrs::tiled

@@ -1,6 +1,7 @@
 // Reads a mesh file as a stream, never whole: each vertex and each triangle is handed to the
 // caller as it is read (polygons fanned into triangles), so a file larger than memory passes
-// through in constant memory. PLY (ascii, binary little- and big-endian) and OBJ (v and f).
+// through in constant memory. PLY (ascii, binary little- and big-endian), OBJ (v and f) and
+// ascii OFF.
 #pragma once
 
 #include <cstdint>
@@ -18,7 +19,7 @@ struct StreamSink {
 };
 
 // "" on success, else what is wrong and where ("line 12: bad vertex", "truncated file").
-// `name` tells the format by its extension (.ply, .obj).
+// `name` tells the format by its extension (.ply, .obj, .off).
 std::string read_mesh_stream(std::FILE* in, const std::string& name, const StreamSink& sink);
 
 } // namespace vrs::tiled

@@ -194,7 +194,8 @@ void run_tile(const std::string& dir, int level, uint64_t tile) {
   opt.target.faces =
       level <= 2 ? size_t(double(bordering) + std::round(ratio * (faces - double(bordering))))
                  : size_t(std::round(ratio * faces));
-  opt.relax_to_reach_target = false;
+  // One tile is the whole mesh, nothing locked: as in core, the last resort may reach the target.
+  opt.relax_to_reach_target = state_number(s, "tiles") == 1;
   opt.locked = &locked;
   opt.threads = 1; // tiles run side by side, each on one core
   const vrs::Report rep = vrs::simplify(mesh, opt);
@@ -239,9 +240,12 @@ Level next_level(const std::string& dir) {
   s["level"] = std::to_string(level + 1);
   s["faces"] = num(double(faces));
   s["ratio"] = num(std::min(1.0, double(target) / double(faces)));
+  // What is left fits the whole budget as one tile (run alone): the last level is the
+  // in-core run of it, borders and all.
+  const uint64_t per_tile = uint64_t(state_number(s, "faces_per_tile"));
+  const uint64_t budget = faces <= per_tile * kTilesInMemory ? faces : per_tile;
   s["tiles"] = num(double(partition(dir, level + 1, uint64_t(state_number(s, "vertices")),
-                                    box_of(s), uint64_t(state_number(s, "faces_per_tile")),
-                                    level_outputs(dir, level, tiles))));
+                                    box_of(s), budget, level_outputs(dir, level, tiles))));
   write_state(dir, s);
   remove_tree(dir + "/L" + std::to_string(level));
   return level_of(s);
