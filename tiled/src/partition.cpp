@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <memory>
 #include <vector>
 
@@ -13,69 +14,83 @@ constexpr int kFine = 64;               // fine cells per axis: the histogram's 
 constexpr size_t kOpenTiles = 400;      // tile files written per pass (open file limit)
 constexpr uint32_t kNone = 0xffffffffu; // vertex of no tile yet
 constexpr uint32_t kShared = 0xfffffffeu;
+constexpr int kShift = 3; // fine cells the octree moves by on even levels
 
-struct Grid {
-  const Box& box;
-  int k = kFine, shift = 0, dims = 1; // coarse cell = k fine cells; shifted by `shift` fine cells
+int fine(const Box& box, const FaceRecord& r, int axis) {
+  const float c = (r.p[0][axis] + r.p[1][axis] + r.p[2][axis]) / 3.0f;
+  const float extent = box.hi[axis] - box.lo[axis];
+  if (!std::isfinite(c) || !(extent > 0)) return 0;
+  const int i = int((c - box.lo[axis]) / extent * kFine);
+  return std::min(std::max(i, 0), kFine - 1);
+}
 
-  int fine(const FaceRecord& r, int axis) const {
-    const float c = (r.p[0][axis] + r.p[1][axis] + r.p[2][axis]) / 3.0f;
-    const float extent = box.hi[axis] - box.lo[axis];
-    if (!std::isfinite(c) || !(extent > 0)) return 0;
-    const int i = int((c - box.lo[axis]) / extent * kFine);
-    return std::min(std::max(i, 0), kFine - 1);
-  }
-  uint64_t cell(const FaceRecord& r) const {
-    uint64_t id = 0;
-    for (int a = 0; a < 3; ++a)
-      id = id * uint64_t(dims) + uint64_t((fine(r, a) + shift) / k);
-    return id;
-  }
-};
+size_t fine_cell(const Box& box, const FaceRecord& r) {
+  return (size_t(fine(box, r, 0)) * kFine + fine(box, r, 1)) * kFine + fine(box, r, 2);
+}
 
-// The largest power-of-two cell whose fullest cell holds at most `budget` faces.
-void choose_cell(Grid& g, const std::vector<uint32_t>& hist, uint64_t total, uint64_t budget,
-                 bool shifted) {
-  if (total <= budget) { // one tile: the whole mesh, nothing locked
-    g.k = 2 * kFine, g.shift = 0, g.dims = 1;
-    return;
-  }
-  for (int k = kFine; k >= 1; k /= 2) {
-    const int shift = shifted ? k / 2 : 0, dims = (kFine - 1 + shift) / k + 1;
-    std::vector<uint64_t> counts(size_t(dims) * dims * dims, 0);
-    for (int x = 0; x < kFine; ++x)
-      for (int y = 0; y < kFine; ++y)
-        for (int z = 0; z < kFine; ++z)
-          counts[(size_t((x + shift) / k) * dims + (y + shift) / k) * dims + (z + shift) / k] +=
-              hist[(size_t(x) * kFine + y) * kFine + z];
-    g.k = k, g.shift = shift, g.dims = dims;
-    if (*std::max_element(counts.begin(), counts.end()) <= budget) return;
-  }
+// Tiles as the leaves of an octree over the fine cells, split until a leaf holds at most
+// `budget` faces: tiles near the budget where the mesh is dense, large ones where it is
+// sparse. On shifted levels the octree's origin moves by `shift` fine cells, so that the
+// previous level's borders fall inside tiles. Returns fine cell -> tile (kNone: no face).
+std::vector<uint32_t> octree_tiles(const std::vector<uint32_t>& hist, uint64_t budget, int shift,
+                                   uint32_t& tiles) {
+  // Prefix sums over the shifted, padded domain [0, 128)^3 for O(1) box counts.
+  constexpr int kDom = 2 * kFine, kP = kDom + 1;
+  std::vector<uint64_t> pre(size_t(kP) * kP * kP, 0);
+  auto at = [&](int x, int y, int z) -> uint64_t& { return pre[(size_t(x) * kP + y) * kP + z]; };
+  for (int x = 0; x < kDom; ++x)
+    for (int y = 0; y < kDom; ++y)
+      for (int z = 0; z < kDom; ++z) {
+        const int fx = x - shift, fy = y - shift, fz = z - shift;
+        const bool in = fx >= 0 && fy >= 0 && fz >= 0 && fx < kFine && fy < kFine && fz < kFine;
+        const uint64_t h = in ? hist[(size_t(fx) * kFine + fy) * kFine + fz] : 0;
+        at(x + 1, y + 1, z + 1) = h + at(x, y + 1, z + 1) + at(x + 1, y, z + 1) +
+                                  at(x + 1, y + 1, z) - at(x, y, z + 1) - at(x, y + 1, z) -
+                                  at(x + 1, y, z) + at(x, y, z);
+      }
+  auto count = [&](int x, int y, int z, int n) {
+    return at(x + n, y + n, z + n) - at(x, y + n, z + n) - at(x + n, y, z + n) -
+           at(x + n, y + n, z) + at(x, y, z + n) + at(x, y + n, z) + at(x + n, y, z) - at(x, y, z);
+  };
+  std::vector<uint32_t> tile_of(hist.size(), kNone);
+  tiles = 0;
+  std::function<void(int, int, int, int)> visit = [&](int x, int y, int z, int n) {
+    const uint64_t c = count(x, y, z, n);
+    if (c == 0) return;
+    if (c <= budget || n == 1) {
+      for (int i = x; i < x + n; ++i)
+        for (int j = y; j < y + n; ++j)
+          for (int k = z; k < z + n; ++k) {
+            const int fx = i - shift, fy = j - shift, fz = k - shift;
+            if (fx >= 0 && fy >= 0 && fz >= 0 && fx < kFine && fy < kFine && fz < kFine)
+              tile_of[(size_t(fx) * kFine + fy) * kFine + fz] = tiles;
+          }
+      ++tiles;
+      return;
+    }
+    const int h = n / 2;
+    for (int i = 0; i < 8; ++i)
+      visit(x + (i & 4 ? h : 0), y + (i & 2 ? h : 0), z + (i & 1 ? h : 0), h);
+  };
+  visit(0, 0, 0, kDom);
+  return tile_of;
 }
 
 } // namespace
 
 uint64_t partition(const std::string& dir, int level, uint64_t vertex_count, const Box& box,
                    uint64_t faces_per_tile, const FaceSource& source) {
-  Grid g{box};
   std::vector<uint32_t> hist(size_t(kFine) * kFine * kFine, 0);
-  uint64_t total = 0;
-  source([&](const FaceRecord& r) {
-    ++hist[(size_t(g.fine(r, 0)) * kFine + g.fine(r, 1)) * kFine + g.fine(r, 2)];
-    ++total;
-  });
-  choose_cell(g, hist, total, faces_per_tile, level % 2 == 0);
-  hist = {};
-
-  // Dense tile ids over the non-empty cells, in cell order; which tile each vertex is in.
-  std::vector<uint32_t> tile_of_cell(size_t(g.dims) * g.dims * g.dims, kNone);
-  std::vector<uint32_t> owner(vertex_count, kNone);
-  source([&](const FaceRecord& r) { tile_of_cell[g.cell(r)] = 0; });
+  source([&](const FaceRecord& r) { ++hist[fine_cell(box, r)]; });
   uint32_t tiles = 0;
-  for (uint32_t& t : tile_of_cell)
-    if (t != kNone) t = tiles++;
+  const std::vector<uint32_t> tile_of =
+      octree_tiles(hist, faces_per_tile, level % 2 == 0 ? kShift : 0, tiles);
+  hist = {};
+  auto tile = [&](const FaceRecord& r) { return tile_of[fine_cell(box, r)]; };
+
+  std::vector<uint32_t> owner(vertex_count, kNone); // which tile each vertex is in
   source([&](const FaceRecord& r) {
-    const uint32_t t = tile_of_cell[g.cell(r)];
+    const uint32_t t = tile(r);
     for (uint32_t v : r.v)
       owner[v] = owner[v] == kNone || owner[v] == t ? t : kShared;
   });
@@ -94,7 +109,7 @@ uint64_t partition(const std::string& dir, int level, uint64_t vertex_count, con
     for (uint32_t t = first; t < last; ++t)
       out.push_back(std::make_unique<RecordWriter>(tile_path(dir, level, t, ".in")));
     source([&](const FaceRecord& r) {
-      const uint32_t t = tile_of_cell[g.cell(r)];
+      const uint32_t t = tile(r);
       if (t < first || t >= last) return;
       FaceRecord w = r;
       w.locked = uint8_t(lock[r.v[0]] | lock[r.v[1]] << 1 | lock[r.v[2]] << 2);
