@@ -10,6 +10,7 @@
 //             error_max,error_mean,certified)
 //   vrs_bench --loop MESH LEVELS OUT.ply       Loop subdivision (large inputs)
 //   vrs_bench --terrain K OUT.ply              (2^K + 1)^2 fractal terrain
+//   vrs_bench --streamed-terrain N OUT.ply     N^2 terrain written a row at a time (any size)
 //   vrs_bench --convert MESH OUT.ply           the mesh as every method here reads it (binary
 //                                             PLY: what bench/python_peers.py hands to Python)
 // Methods: ours (defaults) with suffixes -factor / -local (priority), -linear / -log (mapping),
@@ -205,6 +206,11 @@ int make(int argc, char** argv) {
   } else if (std::string(argv[1]) == "--convert" && argc == 4) {
     if (!load_core(argv[2], m)) return 1;
     out = argv[3];
+  } else if (std::string(argv[1]) == "--streamed-terrain" && argc == 4) {
+    const std::string err =
+        vrs_bench::write_streamed_terrain(uint32_t(std::atol(argv[2])), argv[3]);
+    if (!err.empty()) std::fprintf(stderr, "vrs_bench: %s\n", err.c_str());
+    return err.empty() ? 0 : 1;
   } else if (std::string(argv[1]) == "--terrain" && argc == 4) {
     m = vrs_bench::fractal_terrain(std::atoi(argv[2]), 2026);
     out = argv[3];
@@ -232,7 +238,7 @@ int main(int argc, char** argv) {
   if (std::string(argv[1]) == "--info") return info(argc, argv);
   if (std::string(argv[1]) == "--bound") return bound(argc, argv);
   if (std::string(argv[1]) == "--loop" || std::string(argv[1]) == "--terrain" ||
-      std::string(argv[1]) == "--convert")
+      std::string(argv[1]) == "--streamed-terrain" || std::string(argv[1]) == "--convert")
     return make(argc, argv);
   std::string path = argv[1], name;
   std::vector<std::string> ratios = {"0.5", "0.1", "0.01"},

@@ -1,8 +1,10 @@
 #include "make_inputs.h"
 
 #include <cmath>
+#include <cstring>
 #include <fstream>
 #include <random>
+#include <vector>
 
 #include <vcg/complex/complex.h> // before the algorithms, which rely on it
 
@@ -103,6 +105,61 @@ std::string write_ply(const vrs::Mesh& m, const std::string& path) {
   for (size_t t = 0; t < m.face_count(); ++t) {
     f.write(reinterpret_cast<const char*>(&three), 1);
     f.write(reinterpret_cast<const char*>(&m.triangles[3 * t]), 12);
+  }
+  return f ? std::string() : "write failed: " + path;
+}
+
+namespace {
+
+// A lattice value in [-1, 1] from a hash of its coordinates: noise without a stored table.
+float lattice(uint32_t x, uint32_t y, uint32_t octave) {
+  uint32_t h = x * 0x8da6b343u ^ y * 0xd8163841u ^ octave * 0xcb1ab31fu;
+  h ^= h >> 15, h *= 0x2c1b3c6du, h ^= h >> 12, h *= 0x297a2d39u, h ^= h >> 15;
+  return float(h) / 2147483648.0f - 1.0f;
+}
+
+float value_noise(float x, float y, uint32_t octave) {
+  const float fx = std::floor(x), fy = std::floor(y);
+  const uint32_t ix = uint32_t(int64_t(fx)), iy = uint32_t(int64_t(fy));
+  float u = x - fx, v = y - fy;
+  u = u * u * (3 - 2 * u), v = v * v * (3 - 2 * v); // smoothstep: no creases at lattice lines
+  const float a = lattice(ix, iy, octave), b = lattice(ix + 1, iy, octave),
+              c = lattice(ix, iy + 1, octave), d = lattice(ix + 1, iy + 1, octave);
+  return (a + (b - a) * u) * (1 - v) + (c + (d - c) * u) * v;
+}
+
+} // namespace
+
+std::string write_streamed_terrain(uint32_t n, const std::string& path) {
+  if (n < 2 || uint64_t(n) * n > 0xffffffffull) return "terrain size out of range";
+  std::ofstream f(path, std::ios::binary);
+  if (!f) return "cannot write " + path;
+  const uint64_t faces = 2ull * (n - 1) * (n - 1);
+  f << "ply\nformat binary_little_endian 1.0\nelement vertex " << uint64_t(n) * n
+    << "\nproperty float x\nproperty float y\nproperty float z\nelement face " << faces
+    << "\nproperty list uchar int vertex_indices\nend_header\n";
+  std::vector<float> row(3 * size_t(n));
+  for (uint32_t y = 0; y < n; ++y) {
+    for (uint32_t x = 0; x < n; ++x) {
+      float z = 0, amp = float(n) * 0.05f, freq = 4.0f / float(n); // a few hills across
+      for (uint32_t o = 0; freq < 1.0f; ++o, amp *= 0.5f, freq *= 2.0f)
+        z += amp * value_noise(float(x) * freq, float(y) * freq, o);
+      row[3 * x] = float(x), row[3 * x + 1] = float(y), row[3 * x + 2] = z;
+    }
+    f.write(reinterpret_cast<const char*>(row.data()), std::streamsize(row.size() * sizeof(float)));
+  }
+  std::vector<unsigned char> rec(2 * 13 * size_t(n - 1));
+  for (uint32_t y = 0; y + 1 < n; ++y) {
+    unsigned char* p = rec.data();
+    for (uint32_t x = 0; x + 1 < n; ++x) {
+      const uint32_t a = y * n + x, b = a + 1, c = a + n, d = c + 1;
+      const uint32_t tris[6] = {a, b, d, a, d, c};
+      for (int t = 0; t < 2; ++t) {
+        *p++ = 3;
+        std::memcpy(p, tris + 3 * t, 12), p += 12;
+      }
+    }
+    f.write(reinterpret_cast<const char*>(rec.data()), std::streamsize(rec.size()));
   }
   return f ? std::string() : "write failed: " + path;
 }

@@ -32,7 +32,7 @@ grep -E "^#[0-9]+.*(DONE|pulse)" "$b/fuzz.log" | tail -1
 # saying which reader (even: PLY, odd: OBJ).
 s=$b/stream-seeds
 mkdir -p "$s" "$b/stream-corpus"
-{ printf '\0'; head -c 3000 "$top/meshes/mushroom.off" | sed '1d' | awk 'BEGIN { print "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2" }'; } >"$s/ascii.ply"
+{ printf '\0'; printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n'; } >"$s/ascii.ply"
 { printf '\0'; printf 'ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n'
   head -c 36 /dev/zero; printf '\003\000\000\000\000\001\000\000\000\002\000\000\000'; } >"$s/binary.ply"
 { printf '\1'; printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 1\nvt 0 0\nf 1/1 2/1 3/1 4/1\nf -1 -2 -3\n'; } >"$s/quad.obj"

@@ -13,7 +13,7 @@ trap 'rm -rf "$env"' EXIT
 /usr/bin/python3 -m venv "$env/venv"
 pin() { grep -E "^$1==" "$top/requirements.txt"; }
 "$env/venv/bin/pip" install -q --disable-pip-version-check "$wheel" \
-  "$(pin pymeshlab)" "$(pin trimesh)" "$(pin pytest)" "$(pin dask)" "$(pin distributed)"
+  "$(pin pymeshlab)" "$(pin trimesh)" "$(pin pytest)" "$(pin dask)" "$(pin distributed)" "$(pin fsspec)"
 cd "$env"
 "$env/venv/bin/python" -c "import vrsimplify, sys; assert '$env' in vrsimplify.__file__, vrsimplify.__file__"
 import_ms=$("$env/venv/bin/python" -c "import time; t = time.perf_counter(); import vrsimplify; print(f'{1e3 * (time.perf_counter() - t):.0f}')")

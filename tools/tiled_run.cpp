@@ -63,8 +63,17 @@ int run_tiled(const TiledRequest& r) {
   const int workers =
       std::min(vrs::tiled::kTilesInMemory,
                r.workers > 0 ? r.workers : int(std::max(1u, std::thread::hardware_concurrency())));
-  std::string dir = r.workdir;
-  if (dir.empty()) dir = r.output + ".vrs-tiles";
+  std::string dir;
+  try {
+    // Beside the output unless told: the tile files take about twice the input's size.
+    const size_t slash = r.output.rfind('/');
+    dir = vrs::tiled::make_work_dir(!r.workdir.empty()           ? r.workdir
+                                    : slash == std::string::npos ? std::string(".")
+                                                                 : r.output.substr(0, slash + 1));
+  } catch (const std::exception& e) {
+    std::fprintf(stderr, "vrsimplify: %s\n", e.what());
+    return 1;
+  }
   vrs::tiled::Settings s;
   s.ratio = r.ratio;
   s.faces_per_tile = vrs::tiled::faces_for_memory(r.memory);

@@ -74,6 +74,9 @@ void register_tiled(nb::module_& m) {
   m.def("tiled_finish", [](const std::string& workdir, const std::string& output) {
     return guarded([&] { return vrs::tiled::finish(workdir, output); });
   });
+  m.def("tiled_make_work_dir", [](const std::string& parent) {
+    return guarded([&] { return vrs::tiled::make_work_dir(parent); });
+  });
   m.def("tiled_discard", [](const std::string& workdir) { vrs::tiled::discard(workdir); });
   m.def("tiled_faces_for_memory", &vrs::tiled::faces_for_memory);
   m.def("tiled_fits_in_core", &vrs::tiled::fits_in_core);

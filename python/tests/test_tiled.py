@@ -68,9 +68,29 @@ def test_local_processes_and_dask_give_the_same_output(big, tmp_path):
             distributed.Client(cluster) as client:
         on_dask = tmp_path / "dask.ply"
         r2 = vrsimplify.tiled.simplify(src, on_dask, ratio=0.1, memory="64M", client=client)
-    assert r2["output_faces"] == r["output_faces"]
-    assert local.read_bytes() == on_dask.read_bytes()
-    assert not (tmp_path / "dask.ply.vrs-tiles").exists()  # the work directory is cleaned up
+        # The work directory as an fsspec URL: tiles fetched and returned by the workers.
+        by_url = tmp_path / "url.ply"
+        shared = tmp_path / "shared"
+        r3 = vrsimplify.tiled.simplify(src, by_url, ratio=0.1, memory="64M", client=client,
+                                       workdir=shared.as_uri())
+    assert r2["output_faces"] == r["output_faces"] == r3["output_faces"]
+    assert local.read_bytes() == on_dask.read_bytes() == by_url.read_bytes()
+    assert not list(tmp_path.glob("vrsimplify-tiles-*"))  # the work directories are cleaned up
+    assert not list(shared.iterdir())
+
+
+def test_a_named_work_directory_keeps_what_it_held(big, tmp_path):
+    src, v, f = big
+    scratch = tmp_path / "scratch"
+    scratch.mkdir()
+    (scratch / "yours.txt").write_text("keep me")
+    r = vrsimplify.tiled.simplify(src, tmp_path / "o.ply", ratio=0.1, memory="64M", workers=2,
+                                  workdir=scratch)
+    assert r["workdir"].startswith(str(scratch / "vrsimplify-tiles-"))
+    assert [p.name for p in scratch.iterdir()] == ["yours.txt"]
+    assert (scratch / "yours.txt").read_text() == "keep me"
+    with pytest.raises(ValueError, match="URL work directory"):
+        vrsimplify.tiled.simplify(src, tmp_path / "o.ply", ratio=0.1, workdir="s3://bucket/x")
 
 
 def test_one_worker_or_two_the_same_output(big, tmp_path):
@@ -101,7 +121,7 @@ def test_bad_input_is_a_clear_error_and_leaves_nothing(big, tmp_path):
         out = tmp_path / f"{name}.out.ply"
         with pytest.raises(ValueError, match=messages[name]):
             vrsimplify.tiled.simplify(path, out, ratio=0.1, memory="64M")
-        assert not out.exists() and not (tmp_path / f"{name}.out.ply.vrs-tiles").exists()
+        assert not out.exists() and not list(tmp_path.glob("vrsimplify-tiles-*"))
         assert not list(tmp_path.glob("*.tmp.*"))
     blocked = tmp_path / "file"
     blocked.write_text("not a folder")

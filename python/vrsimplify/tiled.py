@@ -2,7 +2,8 @@
 
     import vrsimplify.tiled
     vrsimplify.tiled.simplify("scan.ply", "scan-1.ply", ratio=0.01, memory="2G")
-    # on a cluster: every worker needs this package and the work directory
+    # on a cluster: every worker needs this package, and the work directory (a shared folder
+    # or an fsspec URL)
     from dask.distributed import Client
     vrsimplify.tiled.simplify("scan.ply", "scan-1.ply", ratio=0.01, memory="2G",
                               client=Client("tcp://scheduler:8786"), workdir="/shared/tiles")
@@ -22,7 +23,7 @@ import sys
 import time
 from typing import Optional, Union
 
-from . import _core
+from . import _core, _remote_tiles
 
 __all__ = ["simplify"]
 
@@ -31,6 +32,13 @@ def _run_tile(workdir: str, level: int, tile: int) -> int:
     """One Dask task: a tile, written atomically (a retried task rewrites it whole)."""
     from vrsimplify import _core as core  # imported in the worker process
     core.tiled_run_tile(workdir, level, tile)
+    return tile
+
+
+def _run_remote_tile(fs, remote: str, level: int, tile: int) -> int:
+    """One Dask task when the work directory is a URL."""
+    from vrsimplify import _remote_tiles
+    _remote_tiles.run_tile(fs, remote, level, tile)
     return tile
 
 
@@ -44,8 +52,10 @@ def simplify(src: Union[str, os.PathLike], dst: Union[str, os.PathLike], *, rati
     it. The tiles, and so the output, depend on it alone, not on who runs them.
     client: a dask.distributed Client: tiles become its tasks (retried `retries` times if a
     worker dies); without one they run on `workers` local processes (0: the cores, at most 4).
-    workdir: where the tile files go (default: `dst` + ".vrs-tiles"); with a client, a path
-    every worker can reach. Removed afterwards unless keep_workdir.
+    workdir: where the tile files go, in a fresh folder made there and removed afterwards
+    (unless keep_workdir; default: dst's folder; about 70 bytes a face). With a client, a path
+    every worker can reach, or an fsspec URL (s3://bucket/tmp, file:///shared/tmp...): the
+    driver then keeps its files in dst's folder and the workers fetch and return tiles.
     Returns counts and times; raises ValueError with the reason (a malformed file, a full disk,
     an unwritable work directory) and leaves no output file behind.
     """
@@ -53,37 +63,48 @@ def simplify(src: Union[str, os.PathLike], dst: Union[str, os.PathLike], *, rati
     budget = memory if isinstance(memory, int) else _core.tiled_parse_memory(str(memory))
     if not budget:
         raise ValueError(f"memory must be a size such as 512M or 2G, got {memory!r}")
-    workdir = os.fspath(workdir) if workdir else dst + ".vrs-tiles"
-    if "://" in workdir:
-        raise ValueError("the work directory must be a file system path every worker can reach "
-                         f"(a shared mount); URLs are not supported: {workdir}")
+    parent = os.fspath(workdir) if workdir else (os.path.dirname(dst) or ".")
+    url = "://" in parent
+    if url and client is None:
+        raise ValueError(f"a URL work directory ({parent}) is for Dask workers: give a client, "
+                         "or a local folder")
+    local = _core.tiled_make_work_dir(os.path.dirname(dst) or "." if url else parent)
+    store = _remote_tiles.open_store(parent) if url else None
     t0 = time.perf_counter()
     levels = []
     try:
-        level = _core.tiled_begin(src, workdir, float(ratio), _core.tiled_faces_for_memory(budget))
+        level = _core.tiled_begin(src, local, float(ratio), _core.tiled_faces_for_memory(budget))
         input_faces = level["faces"]
         while level["tiles"]:
-            t = time.perf_counter()
+            t, n, k = time.perf_counter(), level["tiles"], level["level"]
             if client is None:
-                _core.tiled_run_level_locally(workdir, level, int(workers), bool(progress))
+                _core.tiled_run_level_locally(local, level, int(workers), bool(progress))
             else:
                 if progress:
-                    print(f"level {level['level']}: {level['tiles']} tiles on Dask",
-                          file=sys.stderr)
-                n = level["tiles"]
-                futures = client.map(_run_tile, [workdir] * n, [level["level"]] * n, range(n),
-                                     pure=False, retries=retries)
+                    print(f"level {k}: {level['faces']} faces in {n} tiles on Dask, "
+                          f"keeping {level['ratio']:.3g}", file=sys.stderr)
+                if store:
+                    _remote_tiles.push_level(*store, local, k, n)
+                    futures = client.map(_run_remote_tile, [store[0]] * n, [store[1]] * n,
+                                         [k] * n, range(n), pure=False, retries=retries)
+                else:
+                    futures = client.map(_run_tile, [local] * n, [k] * n, range(n),
+                                         pure=False, retries=retries)
                 client.gather(futures)
+                if store:
+                    _remote_tiles.pull_level(*store, local, k, n)
             levels.append({**level, "seconds": time.perf_counter() - t})
-            level = _core.tiled_next_level(workdir)
-        output_faces = _core.tiled_finish(workdir, dst)
+            level = _core.tiled_next_level(local)
+        output_faces = _core.tiled_finish(local, dst)
     finally:
         if not keep_workdir:
-            _core.tiled_discard(workdir)
+            _core.tiled_discard(local)
+            if store:
+                _remote_tiles.remove(*store)
     return {"input_faces": input_faces, "output_faces": output_faces,
             "target_faces": int(ratio * input_faces), "levels": levels,
             "faces_per_tile": _core.tiled_faces_for_memory(budget),
-            "seconds": time.perf_counter() - t0}
+            "seconds": time.perf_counter() - t0, "workdir": local}
 
 
 def main(argv=None) -> int:

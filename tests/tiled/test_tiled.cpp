@@ -222,6 +222,24 @@ TEST(Tiled, BadInputAndWorkDirectoriesAreClearErrorsAndLeaveNothing) {
   EXPECT_THROW(vrs::tiled::begin(dir + "/nan.obj", s), std::runtime_error);
   std::ifstream o(dir + "/o.ply");
   EXPECT_FALSE(o.good()); // no output of a failed run
+  EXPECT_THROW(vrs::tiled::make_work_dir(dir + "/file"), std::runtime_error);
+  vrs::tiled::discard(dir);
+}
+
+TEST(Tiled, AWorkDirectoryIsAFreshFolderInTheOneNamedAndOnlyItIsRemoved) {
+  const std::string dir = temp_dir();
+  std::ofstream(dir + "/yours.txt") << "keep me";
+  const std::string a = vrs::tiled::make_work_dir(dir), b = vrs::tiled::make_work_dir(dir);
+  EXPECT_NE(a, b);
+  EXPECT_EQ(a.rfind(dir + "/vrsimplify-tiles-", 0), 0u);
+  vrs::tiled::discard(a);
+  vrs::tiled::discard(b);
+  std::ifstream kept(dir + "/yours.txt");
+  std::string text;
+  std::getline(kept, text);
+  EXPECT_EQ(text, "keep me");
+  const std::string made = vrs::tiled::make_work_dir(dir + "/new"); // a missing parent is made
+  EXPECT_EQ(made.rfind(dir + "/new/vrsimplify-tiles-", 0), 0u);
   vrs::tiled::discard(dir);
 }
 

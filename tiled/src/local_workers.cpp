@@ -14,6 +14,7 @@
 namespace vrs::tiled {
 
 void run_level_locally(const std::string& workdir, const Level& level, int workers, bool progress) {
+  const int cores = std::max(workers, 1); // a lone tile's threads
   workers = int(std::max<uint64_t>(1, std::min<uint64_t>({uint64_t(std::max(workers, 1)),
                                                           uint64_t(kTilesInMemory), level.tiles})));
   if (progress)
@@ -29,7 +30,7 @@ void run_level_locally(const std::string& workdir, const Level& level, int worke
       int status = 0;
       try {
         for (uint64_t t = uint64_t(w); t < level.tiles; t += uint64_t(workers))
-          run_tile(workdir, level.level, t);
+          run_tile(workdir, level.level, t, cores);
       } catch (const std::exception& e) {
         std::fprintf(stderr, "vrsimplify: %s\n", e.what());
         status = 1;

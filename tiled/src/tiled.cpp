@@ -2,10 +2,14 @@
 #include "vrs/tiled.h"
 
 #include <algorithm>
+#include <cerrno>
 #include <cmath>
 #include <cstring>
 #include <stdexcept>
 #include <vector>
+
+#include <sys/stat.h>
+#include <unistd.h>
 
 #include "mesh_stream.h"
 #include "partition.h"
@@ -18,6 +22,9 @@ namespace {
 
 constexpr int kMaxLevels = 12;
 constexpr double kSlack = 0.005; // done within half a per cent of the target
+// The share of the whole budget (kTilesInMemory tiles) the last, single tile is left with:
+// 0.5 measured best of 0.25, 0.5, 0.7 and 0.9 (max error at 1 % on two bunnies and a terrain).
+constexpr double kLastRoom = 0.5;
 
 std::string num(double v) {
   char b[64];
@@ -61,13 +68,21 @@ FaceSource level_outputs(const std::string& dir, int level, uint64_t tiles) {
   };
 }
 
+// What each tile of the level keeps (see run_tile).
+double keep_of(const State& s) {
+  const double ratio = state_number(s, "ratio");
+  if (state_number(s, "tiles") == 1) return ratio;
+  const double room = kLastRoom * double(kTilesInMemory) * state_number(s, "faces_per_tile");
+  return std::max(ratio, std::min(1.0, room / state_number(s, "faces")));
+}
+
 Level level_of(const State& s) {
   Level l;
   l.level = int(state_number(s, "level"));
   l.tiles = s.count("done") ? 0 : uint64_t(state_number(s, "tiles"));
   l.faces = uint64_t(state_number(s, "faces"));
   l.target = uint64_t(state_number(s, "target"));
-  l.ratio = state_number(s, "ratio");
+  l.ratio = s.count("done") ? state_number(s, "ratio") : keep_of(s);
   return l;
 }
 
@@ -144,16 +159,18 @@ Level begin(const std::string& input, const Settings& settings) {
     const size_t got = f ? std::fread(positions.data(), 12, vertices, f) : 0;
     if (f) std::fclose(f);
     if (got != vertices) throw std::runtime_error("cannot read back " + dir + "/vertices.bin");
-    s["tiles"] = num(double(
-        partition(dir, 1, vertices, box, settings.faces_per_tile, input_faces(dir, positions))));
+    // A mesh that fits the whole budget is one tile at once (what the last level would be).
+    const uint64_t budget =
+        faces <= settings.faces_per_tile * kTilesInMemory ? faces : settings.faces_per_tile;
+    s["tiles"] = num(double(partition(dir, 1, vertices, box, budget, input_faces(dir, positions))));
   }
+  std::remove((dir + "/faces.bin").c_str()); // in the tiles now; the disk is the next level's
   write_state(dir, s);
   return level_of(s);
 }
 
-void run_tile(const std::string& dir, int level, uint64_t tile) {
+void run_tile(const std::string& dir, int level, uint64_t tile, int lone_threads) {
   const State s = read_state(dir);
-  const double ratio = state_number(s, "ratio");
   std::vector<FaceRecord> in;
   for_each_record(tile_path(dir, level, tile, ".in"),
                   [&](const FaceRecord& r) { in.push_back(r); });
@@ -183,21 +200,27 @@ void run_tile(const std::string& dir, int level, uint64_t tile) {
   // target asks (measured: +21 % mean error at 10 % on 1.2 M faces); the next level, shifted,
   // releases them. From the third level on (small remainders, coarser tiles) a tile goes as
   // far as the level's ratio of all its faces, without the core's last resort, so that the
-  // run converges.
+  // run converges. Tiles never go below what one tile of the last level can take (kLastRoom):
+  // the last level, in core over the whole mesh, then spends the faces where the surface needs
+  // them, not evenly per tile (1 % of a 2 M-face terrain in 222 tiles: max error 3.0 times the
+  // in-core one's without, 0.99 times with).
   uint64_t bordering = 0;
   for (const FaceRecord& r : in)
     bordering += r.locked != 0;
   in = {};
+  const bool alone = state_number(s, "tiles") == 1;
+  const double keep = keep_of(s);
   vrs::Options opt;
   opt.target.kind = vrs::TargetKind::Faces;
   const double faces = double(mesh.face_count());
   opt.target.faces =
-      level <= 2 ? size_t(double(bordering) + std::round(ratio * (faces - double(bordering))))
-                 : size_t(std::round(ratio * faces));
-  // One tile is the whole mesh, nothing locked: as in core, the last resort may reach the target.
-  opt.relax_to_reach_target = state_number(s, "tiles") == 1;
+      level <= 2 ? size_t(double(bordering) + std::round(keep * (faces - double(bordering))))
+                 : size_t(std::round(keep * faces));
+  // One tile is the whole mesh, nothing locked: as in core, the last resort may reach the
+  // target.
+  opt.relax_to_reach_target = alone;
+  opt.threads = alone ? std::max(0, lone_threads) : 1;
   opt.locked = &locked;
-  opt.threads = 1; // tiles run side by side, each on one core
   const vrs::Report rep = vrs::simplify(mesh, opt);
   if (!rep.ok) throw std::runtime_error("tile " + std::to_string(tile) + ": " + rep.message);
   std::vector<uint32_t> global(mesh.vertex_count());
@@ -316,6 +339,18 @@ uint64_t finish(const std::string& dir, const std::string& output) {
   });
   out.commit();
   return face_count;
+}
+
+std::string make_work_dir(const std::string& parent) {
+  const std::string base = parent.empty() ? "." : parent;
+  if (mkdir(base.c_str(), 0755) != 0 && errno != EEXIST)
+    throw std::runtime_error("cannot make the work directory " + base + ": " +
+                             std::strerror(errno));
+  std::string path = base + "/vrsimplify-tiles-XXXXXX";
+  if (!mkdtemp(path.data()))
+    throw std::runtime_error("cannot make a work directory in " + base + ": " +
+                             std::strerror(errno));
+  return path;
 }
 
 void discard(const std::string& workdir) {

@@ -34,14 +34,20 @@ struct Level {
 // Streams `input` (.ply ascii or binary, .obj) into the work directory and cuts level 1.
 Level begin(const std::string& input, const Settings& settings);
 // Simplifies one tile of the work directory's current level; reads and writes its files only,
-// and writes its output atomically (a re-run after a killed worker is safe).
-void run_tile(const std::string& workdir, int level, uint64_t tile);
+// and writes its output atomically (a re-run after a killed worker is safe). Tiles that run side
+// by side use one thread each; a level of one tile runs alone, on `lone_threads` (0: every
+// core). The output is the same either way.
+void run_tile(const std::string& workdir, int level, uint64_t tile, int lone_threads = 0);
 // Once every tile of the current level has run: cuts the next level, or returns tiles == 0.
 Level next_level(const std::string& workdir);
 // Writes the output (.ply binary, or .obj) atomically: the input's vertices that faces still
 // use, in input order, and the faces. Returns the output's face count.
 uint64_t finish(const std::string& workdir, const std::string& output);
 
+// Makes a fresh work directory inside `parent` (made if missing; "" = the current one), named
+// vrsimplify-tiles-XXXXXX, and returns its path: a run never writes into, nor removes, a folder
+// the user named.
+std::string make_work_dir(const std::string& parent);
 // Removes the work directory and everything in it.
 void discard(const std::string& workdir);
 
