@@ -4,9 +4,11 @@
 # the tiled runs' streaming readers (PLY, OBJ) for a quarter of that, seeded with small files.
 # A finding is written to build/fuzz/findings/ and the script fails; copy it to
 # fuzz/regressions/ (with a name that says what it was) once fixed, and the tests keep it.
+# VRS_FUZZ_SEED fixes libFuzzer's seed (default 0: a new one each run).
 #   scripts/fuzz.sh [SECONDS]
 set -euo pipefail
 seconds=${1:-600}
+seed=${VRS_FUZZ_SEED:-0}
 top=$(cd "$(dirname "$0")/.." && pwd)
 "$top/scripts/setup.sh"
 b=$top/build/fuzz
@@ -18,8 +20,8 @@ data=$top/third_party/cgal-data/data/meshes
 # shellcheck disable=SC2046
 "$b/bin/vrs_fuzz_seeds" "$b/seeds" "$top"/meshes/mushroom.off "$top"/meshes/three_peaks.off \
   $(find "$data" -name '*.off' -size -24k | sort) >/dev/null
-echo "fuzz: ${seconds} s, corpus $b/corpus, seeds $b/seeds"
-"$b/bin/vrs_fuzz" -max_total_time="$seconds" -max_len=65536 -timeout=20 -rss_limit_mb=4096 \
+echo "fuzz: ${seconds} s, seed ${seed} (0: drawn), corpus $b/corpus, seeds $b/seeds"
+"$b/bin/vrs_fuzz" -seed="$seed" -max_total_time="$seconds" -max_len=65536 -timeout=20 -rss_limit_mb=4096 \
   -print_final_stats=1 -artifact_prefix="$b/findings/" "$b/corpus" "$b/seeds" 2>"$b/fuzz.log" || {
   grep -E "invariant broken|ERROR|runtime error" "$b/fuzz.log" | head -5
   echo "fuzz: a finding, see $b/findings/ and $b/fuzz.log"
@@ -37,7 +39,7 @@ mkdir -p "$s" "$b/stream-corpus"
   head -c 36 /dev/zero; printf '\003\000\000\000\000\001\000\000\000\002\000\000\000'; } >"$s/binary.ply"
 { printf '\1'; printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 1\nvt 0 0\nf 1/1 2/1 3/1 4/1\nf -1 -2 -3\n'; } >"$s/quad.obj"
 stream_seconds=$(( seconds / 4 > 10 ? seconds / 4 : 10 ))
-"$b/bin/vrs_fuzz_stream" -max_total_time="$stream_seconds" -max_len=4096 -timeout=5 -rss_limit_mb=2048 \
+"$b/bin/vrs_fuzz_stream" -seed="$seed" -max_total_time="$stream_seconds" -max_len=4096 -timeout=5 -rss_limit_mb=2048 \
   -print_final_stats=1 -artifact_prefix="$b/findings/" "$b/stream-corpus" "$s" 2>"$b/fuzz-stream.log" || {
   grep -E "ERROR|runtime error" "$b/fuzz-stream.log" | head -5
   echo "fuzz: a finding in the streaming readers, see $b/findings/ and $b/fuzz-stream.log"

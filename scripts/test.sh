@@ -5,8 +5,9 @@
 # packages installed with apt-get), the wheel in a fresh virtual environment, then the core, CLI
 # and sweep tests again built with AddressSanitizer + UndefinedBehaviorSanitizer in build/asan/
 # (MeshLab cannot load an instrumented plugin), the thread tests under ThreadSanitizer in
-# build/tsan/, then a bounded libFuzzer run (VRS_FUZZ_SECONDS, default 120; scripts/fuzz.sh
-# runs longer).
+# build/tsan/, then a bounded libFuzzer run (VRS_FUZZ_SECONDS, default 120, from a fixed seed,
+# VRS_FUZZ_SEED, default 1, so that a run judges the change and not the draw; scripts/fuzz.sh
+# alone draws a new seed each time and runs longer, to find what is new).
 #   scripts/test.sh [--no-sanitizers]
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
@@ -28,5 +29,5 @@ if [ "${1:-}" != "--no-sanitizers" ]; then
   cmake --build "$top/build/tsan" --target test_threads -j "$(nproc)"
   TSAN_OPTIONS=halt_on_error=1 "$top/build/tsan/bin/test_threads" --gtest_filter='Workers.*:Threads.*'
   echo "== libFuzzer on the core, ${VRS_FUZZ_SECONDS:-120} s"
-  "$top/scripts/fuzz.sh" "${VRS_FUZZ_SECONDS:-120}"
+  VRS_FUZZ_SEED=${VRS_FUZZ_SEED:-1} "$top/scripts/fuzz.sh" "${VRS_FUZZ_SECONDS:-120}"
 fi

@@ -1,5 +1,6 @@
 #include "orientation.h"
 
+#include <algorithm>
 #include <utility>
 
 namespace vrs {
@@ -25,6 +26,32 @@ uint32_t across(uint32_t f, uint32_t a, uint32_t b, const uint32_t* t, const Top
   return other;
 }
 
+// Repeated directed edges (a -> b walked by more than one face, the count the input is judged
+// by) on the edges [begin, end) (a << 32 | b, a < b), each face walking as given or reversed
+// as `reversed(g)` says.
+template <class Reversed>
+size_t repeats_on(const uint64_t* begin, const uint64_t* end, const uint32_t* t,
+                  const Topology& topo, Reversed reversed) {
+  size_t repeats = 0;
+  std::vector<uint32_t> holders;
+  for (const uint64_t* e = begin; e != end; ++e) {
+    const uint32_t a = uint32_t(*e >> 32), b = uint32_t(*e);
+    holders.assign(topo.faces_of(a), topo.faces_of(a) + topo.valence(a));
+    std::sort(holders.begin(), holders.end());
+    holders.erase(std::unique(holders.begin(), holders.end()), holders.end());
+    size_t ab = 0, ba = 0;
+    for (uint32_t g : holders)
+      for (int c = 0; c < 3; ++c) {
+        uint32_t x = t[3 * g + c], y = t[3 * g + (c + 1) % 3];
+        if (reversed(g)) std::swap(x, y);
+        ab += x == a && y == b;
+        ba += x == b && y == a;
+      }
+    repeats += (ab > 1 ? ab - 1 : 0) + (ba > 1 ? ba - 1 : 0);
+  }
+  return repeats;
+}
+
 } // namespace
 
 size_t orient_coherently(std::vector<uint32_t>& tris, const Topology& topo, const uint32_t* rank,
@@ -42,41 +69,93 @@ size_t orient_coherently(std::vector<uint32_t>& tris, const Topology& topo, cons
     }
   if (coherent) return 0;
 
-  // Breadth-first over manifold edges: a face's reversal follows from its neighbour's.
+  // Breadth-first over manifold edges: a face's reversal follows from its neighbour's. Each
+  // piece's faces are a range of `order`, with its edges not held by exactly two faces.
+  struct Piece {
+    size_t begin = 0, end = 0, edges_begin = 0, edges_end = 0;
+    size_t reversed = 0, linked_same = 0; // linked edges walked the same way, seen from both
+    uint32_t first = kNone;               // the face of lowest rank
+    bool conflict = false;
+  };
   constexpr uint8_t kUnseen = 2;
   std::vector<uint8_t> flip(faces, kUnseen);
-  std::vector<uint32_t> piece;
-  size_t total = 0;
+  std::vector<uint32_t> order, piece_of(faces, kNone);
+  std::vector<uint64_t> unlinked;
+  std::vector<Piece> pieces;
   for (size_t seed = 0; seed < faces; ++seed) {
     if (flip[seed] != kUnseen) continue;
-    piece.clear();
-    piece.push_back(uint32_t(seed));
+    Piece p;
+    p.begin = order.size();
+    p.edges_begin = unlinked.size();
+    p.first = uint32_t(seed);
+    order.push_back(uint32_t(seed));
     flip[seed] = 0;
-    size_t reversed = 0;
-    uint32_t first = uint32_t(seed);
-    bool conflict = false;
-    for (size_t next = 0; next < piece.size(); ++next) {
-      const uint32_t f = piece[next];
-      reversed += flip[f];
-      if (rank[f] < rank[first]) first = f;
+    for (size_t next = p.begin; next < order.size(); ++next) {
+      const uint32_t f = order[next];
+      piece_of[f] = uint32_t(pieces.size());
+      p.reversed += flip[f];
+      if (rank[f] < rank[p.first]) p.first = f;
       for (int e = 0; e < 3; ++e) {
-        const uint32_t g = across(f, t[3 * f + e], t[3 * f + (e + 1) % 3], t, topo, same);
-        if (g == kNone) continue;
+        const uint32_t a = t[3 * f + e], b = t[3 * f + (e + 1) % 3];
+        const uint32_t g = across(f, a, b, t, topo, same);
+        if (g == kNone) {
+          if (a != b) unlinked.push_back(uint64_t(std::min(a, b)) << 32 | std::max(a, b));
+          continue;
+        }
+        p.linked_same += same;
         if (flip[g] != kUnseen) {
-          conflict = conflict || flip[g] != (flip[f] ^ same);
+          p.conflict = p.conflict || flip[g] != (flip[f] ^ same);
           continue;
         }
         flip[g] = uint8_t(flip[f] ^ same);
-        piece.push_back(g);
+        order.push_back(g);
       }
     }
-    // A piece that is not orientable (a Moebius strip) stays as given: no choice would be
-    // coherent, and its conflicting vertices are kept as non-manifold.
-    const bool invert =
-        2 * reversed > piece.size() || (2 * reversed == piece.size() && flip[first]);
-    for (uint32_t f : piece)
-      flip[f] = conflict ? 0 : uint8_t(flip[f] ^ invert);
-    if (!conflict) total += invert ? piece.size() - reversed : reversed;
+    p.end = order.size();
+    std::sort(unlinked.begin() + p.edges_begin, unlinked.end());
+    unlinked.erase(std::unique(unlinked.begin() + p.edges_begin, unlinked.end()), unlinked.end());
+    p.edges_end = unlinked.size();
+    pieces.push_back(p);
+  }
+
+  // Each piece in the order of its lowest-ranked face (the caller's order, whatever the faces'
+  // own). A piece coherent as given stays so, as does one that is not orientable (a Moebius
+  // strip): no choice would be coherent, and its conflicting vertices are kept as
+  // non-manifold. Where a piece meets other
+  // faces at edges held by three or more (duplicated faces, fins), its two orientations may
+  // repeat directed edges there: the one repeating fewer wins (a tie: the orientation most of
+  // its faces had, then its first face's), and the piece stays as given if both repeat more
+  // than it did (pieces decided before as they were left, the others as given), so the input's
+  // count of repeated directed edges never grows.
+  std::vector<uint32_t> by_rank(pieces.size());
+  for (size_t i = 0; i < pieces.size(); ++i)
+    by_rank[i] = uint32_t(i);
+  std::sort(by_rank.begin(), by_rank.end(),
+            [&](uint32_t x, uint32_t y) { return rank[pieces[x].first] < rank[pieces[y].first]; });
+  std::vector<uint8_t> decided(pieces.size(), 0);
+  size_t total = 0;
+  for (uint32_t i : by_rank) {
+    const Piece& p = pieces[i];
+    bool keep = p.conflict || p.reversed == 0, invert = false;
+    if (!keep) {
+      auto cost = [&](int mode) { // 0: as given, 1: as the search found, 2: the opposite
+        return repeats_on(unlinked.data() + p.edges_begin, unlinked.data() + p.edges_end, t, topo,
+                          [&](uint32_t g) {
+                            if (piece_of[g] != i) return decided[piece_of[g]] && flip[g] == 1;
+                            return mode != 0 && bool(flip[g] ^ (mode == 2));
+                          });
+      };
+      // Linked edges repeat nothing once oriented; as given, those walked the same way do.
+      const size_t given = cost(0) + p.linked_same / 2, found = cost(1), opposite = cost(2);
+      const size_t n = p.end - p.begin;
+      invert = opposite != found ? opposite < found
+                                 : 2 * p.reversed > n || (2 * p.reversed == n && flip[p.first]);
+      keep = std::min(found, opposite) > given;
+    }
+    for (size_t k = p.begin; k < p.end; ++k)
+      flip[order[k]] = keep ? 0 : uint8_t(flip[order[k]] ^ invert);
+    decided[i] = 1;
+    if (!keep) total += invert ? p.end - p.begin - p.reversed : p.reversed;
   }
   if (total == 0) return 0;
   flipped.assign(faces, 0);

@@ -120,3 +120,22 @@ TEST(Orientation, ShuffledSphereIsSimplifiedToItsTarget) {
     EXPECT_EQ(vrs_test::check_run(in, out, o, r), "") << ratio;
   }
 }
+
+TEST(Orientation, APieceMeetingADuplicatedFaceIsTurnedTheWayThatRepeatsNoMoreEdges) {
+  // Faces 0 and 4 are the same face written twice; faces 1 and 5 walk their shared edge the
+  // same way. Of the piece {1, 2, 5, 6}'s two coherent orientations, one also walks the
+  // duplicated face's edges as it does (a fuzzer's finding: that one was chosen, by the tie
+  // of two faces against two); the other repeats fewer directed edges than the input.
+  Mesh m;
+  m.positions.assign(3 * 7, 0.f);
+  for (int v = 0; v < 7; ++v) {
+    m.positions[3 * v] = float(std::cos(v));
+    m.positions[3 * v + 1] = float(std::sin(v));
+    m.positions[3 * v + 2] = float(v % 2);
+  }
+  m.triangles = {2, 0, 6, 0, 5, 4, 6, 5, 2, 2, 3, 0, 6, 2, 0, 6, 0, 5, 4, 1, 0};
+  const size_t before = vrs_test::count_duplicate_directed_edges(m);
+  std::vector<uint8_t> flipped;
+  orient(m, flipped);
+  EXPECT_LT(vrs_test::count_duplicate_directed_edges(m), before);
+}

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <set>
 #include <unordered_map>
 #include <unordered_set>
 #include <vector>
@@ -251,9 +252,12 @@ std::vector<long> component_euler(const vrs::Mesh& m) {
 }
 
 size_t orient_coherently(vrs::Mesh& m) {
-  // Written apart from the core's (orientation.cpp), over an edge map: for each piece, breadth
-  // first from its lowest face, then the orientation most of its faces had (a tie: the lowest
-  // face's); a piece that is not orientable stays as given.
+  // Written apart from the core's (orientation.cpp), over an edge map: each piece found
+  // breadth first from its lowest face; then, piece by piece from the lowest, one that was
+  // incoherent and is orientable takes whichever of its two orientations repeats fewer directed
+  // edges (counted on all its edges, the faces of pieces before it as they were left), a tie
+  // going to the orientation most of its faces had, then its lowest face's; unless both
+  // repeat more than it did as given.
   const size_t faces = m.face_count();
   std::unordered_map<uint64_t, std::vector<uint32_t>> by_edge; // undirected edge -> faces
   auto key = [](uint32_t a, uint32_t b) {
@@ -268,17 +272,17 @@ size_t orient_coherently(vrs::Mesh& m) {
       if (t[3 * f + e] == a && t[3 * f + (e + 1) % 3] == b) return true;
     return false;
   };
-  std::vector<int> flip(faces, -1);
-  size_t total = 0;
+  std::vector<int> flip(faces, -1);    // relative to the piece's lowest face, then final
+  std::vector<int> reversal(faces, 0); // as the faces stand now
+  std::vector<std::vector<uint32_t>> pieces;
+  std::vector<bool> orientable;
   for (size_t seed = 0; seed < faces; ++seed) {
     if (flip[seed] >= 0) continue;
     std::vector<uint32_t> piece{uint32_t(seed)};
     flip[seed] = 0;
-    size_t reversed = 0;
-    bool orientable = true;
+    bool ok = true;
     for (size_t i = 0; i < piece.size(); ++i) {
       const uint32_t f = piece[i];
-      reversed += flip[f];
       for (int e = 0; e < 3; ++e) {
         const uint32_t a = t[3 * f + e], b = t[3 * f + (e + 1) % 3];
         const auto& holders = by_edge[key(a, b)];
@@ -286,20 +290,60 @@ size_t orient_coherently(vrs::Mesh& m) {
         const uint32_t g = holders[0] == f ? holders[1] : holders[0];
         const int want = flip[f] ^ int(walks(g, a, b));
         if (flip[g] >= 0) {
-          orientable = orientable && flip[g] == want;
+          ok = ok && flip[g] == want;
           continue;
         }
         flip[g] = want;
         piece.push_back(g);
       }
     }
-    const int invert = 2 * reversed > piece.size();
+    pieces.push_back(piece);
+    orientable.push_back(ok);
+  }
+  auto repeats = [&](const std::vector<uint32_t>& piece) { // on the piece's edges, as they stand
+    std::set<uint64_t> edges;
     for (uint32_t f : piece)
-      flip[f] = orientable ? flip[f] ^ invert : 0; // a non-orientable piece stays as given
-    if (orientable) total += invert ? piece.size() - reversed : reversed;
+      for (int e = 0; e < 3; ++e)
+        edges.insert(key(t[3 * f + e], t[3 * f + (e + 1) % 3]));
+    size_t n = 0;
+    for (uint64_t k : edges) {
+      const uint32_t a = uint32_t(k >> 32), b = uint32_t(k);
+      size_t ab = 0, ba = 0;
+      for (uint32_t g : by_edge[k]) {
+        const bool forward = walks(g, a, b) != bool(reversal[g]);
+        ab += forward;
+        ba += !forward;
+      }
+      n += (ab > 1 ? ab - 1 : 0) + (ba > 1 ? ba - 1 : 0);
+    }
+    return n;
+  };
+  size_t total = 0;
+  for (size_t p = 0; p < pieces.size(); ++p) { // found from the lowest face: already in order
+    const auto& piece = pieces[p];
+    size_t reversed = 0;
+    for (uint32_t f : piece)
+      reversed += flip[f];
+    if (!orientable[p] || reversed == 0) continue;
+    const size_t given = repeats(piece);
+    for (uint32_t f : piece)
+      reversal[f] = flip[f];
+    const size_t found = repeats(piece);
+    for (uint32_t f : piece)
+      reversal[f] = !flip[f];
+    const size_t opposite = repeats(piece);
+    if (std::min(found, opposite) > given) {
+      for (uint32_t f : piece)
+        reversal[f] = 0;
+      continue;
+    }
+    const bool invert = found != opposite ? opposite < found : 2 * reversed > piece.size();
+    for (uint32_t f : piece)
+      reversal[f] = flip[f] ^ int(invert);
+    total += invert ? piece.size() - reversed : reversed;
   }
   for (size_t f = 0; f < faces; ++f)
-    if (flip[f]) std::swap(m.triangles[3 * f + 1], m.triangles[3 * f + 2]);
+    if (reversal[f]) std::swap(m.triangles[3 * f + 1], m.triangles[3 * f + 2]);
   return total;
 }
 

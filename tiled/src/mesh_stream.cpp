@@ -49,6 +49,13 @@ size_t size_of(Type t) {
   return sizes[size_t(t)];
 }
 
+// A binary value in the machine's byte order (memcpy: the bytes need not be aligned).
+template <class T> double load(const unsigned char* b) {
+  T v;
+  std::memcpy(&v, b, sizeof v);
+  return double(v);
+}
+
 struct Property {
   std::string name;
   Type type = Type::Bad;
@@ -105,42 +112,12 @@ struct PlyReader {
     switch (t) {
     case Type::Int8: out = double(int8_t(b[0])); break;
     case Type::UInt8: out = double(b[0]); break;
-    case Type::Int16: {
-      int16_t v;
-      std::memcpy(&v, b, 2);
-      out = v;
-      break;
-    }
-    case Type::UInt16: {
-      uint16_t v;
-      std::memcpy(&v, b, 2);
-      out = v;
-      break;
-    }
-    case Type::Int32: {
-      int32_t v;
-      std::memcpy(&v, b, 4);
-      out = v;
-      break;
-    }
-    case Type::UInt32: {
-      uint32_t v;
-      std::memcpy(&v, b, 4);
-      out = v;
-      break;
-    }
-    case Type::Float32: {
-      float v;
-      std::memcpy(&v, b, 4);
-      out = v;
-      break;
-    }
-    case Type::Float64: {
-      double v;
-      std::memcpy(&v, b, 8);
-      out = v;
-      break;
-    }
+    case Type::Int16: out = load<int16_t>(b); break;
+    case Type::UInt16: out = load<uint16_t>(b); break;
+    case Type::Int32: out = load<int32_t>(b); break;
+    case Type::UInt32: out = load<uint32_t>(b); break;
+    case Type::Float32: out = load<float>(b); break;
+    case Type::Float64: out = load<double>(b); break;
     default: return false;
     }
     return true;
