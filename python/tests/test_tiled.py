@@ -1,7 +1,13 @@
 """Tiled runs through the package: a ~1.3 M-face closed mesh cut into tiles (a small memory
 budget forces them), on local processes and on a real Dask cluster (a LocalCluster of two
 worker processes): the same output byte for byte, watertight, every vertex an input vertex,
-the target met; bad input is a clear error that leaves nothing behind."""
+the target met; a worker killed mid-run changes nothing; bad input is a clear error that
+leaves nothing behind."""
+import os
+import signal
+import threading
+import time
+
 import numpy as np
 import pytest
 import trimesh
@@ -66,6 +72,37 @@ def test_local_processes_and_dask_give_the_same_output(big, tmp_path):
     assert local.read_bytes() == on_dask.read_bytes() == by_url.read_bytes()
     assert not list(tmp_path.glob("vrsimplify-tiles-*"))  # the work directories are cleaned up
     assert not list(shared.iterdir())
+
+
+def test_a_worker_killed_while_it_runs_tiles_changes_nothing(big, tmp_path):
+    """A worker process killed (SIGKILL) while it holds tile tasks: Dask gives them to the other
+    worker (the nanny restarts the dead one), the tiles it may have half written are written
+    again whole, and the output is the local run's, byte for byte."""
+    distributed = pytest.importorskip("distributed")
+    src, v, f = big
+    local = tmp_path / "local.ply"
+    vrsimplify.tiled.simplify(src, local, ratio=0.1, memory="64M", workers=2)
+    out, result = tmp_path / "dask.ply", {}
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                  dashboard_address=None) as cluster, \
+            distributed.Client(cluster) as client:
+        pids = client.run(os.getpid)  # worker address -> its process
+        run = threading.Thread(target=lambda: result.update(vrsimplify.tiled.simplify(
+            src, out, ratio=0.1, memory="64M", client=client, workdir=tmp_path)))
+        run.start()
+        victim, deadline = None, time.monotonic() + 120
+        while victim is None and run.is_alive() and time.monotonic() < deadline:
+            busy = [a for a, keys in client.processing().items()
+                    if any("_run_tile" in str(k) for k in keys)]
+            victim = busy[0] if busy else None
+            time.sleep(0.005)
+        assert victim, "no worker was seen running a tile"
+        os.kill(pids[victim], signal.SIGKILL)
+        run.join(300)
+        assert not run.is_alive()
+    assert result["output_faces"] <= 0.1 * len(f) * 1.005 + 2
+    assert out.read_bytes() == local.read_bytes()
+    assert not list(tmp_path.glob("vrsimplify-tiles-*"))
 
 
 def test_a_named_work_directory_keeps_what_it_held(big, tmp_path):
