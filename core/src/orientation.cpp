@@ -120,13 +120,12 @@ size_t orient_coherently(std::vector<uint32_t>& tris, const Topology& topo, cons
 
   // Each piece in the order of its lowest-ranked face (the caller's order, whatever the faces'
   // own). A piece coherent as given stays so, as does one that is not orientable (a Moebius
-  // strip): no choice would be coherent, and its conflicting vertices are kept as
-  // non-manifold. Where a piece meets other
-  // faces at edges held by three or more (duplicated faces, fins), its two orientations may
-  // repeat directed edges there: the one repeating fewer wins (a tie: the orientation most of
-  // its faces had, then its first face's), and the piece stays as given if both repeat more
-  // than it did (pieces decided before as they were left, the others as given), so the input's
-  // count of repeated directed edges never grows.
+  // strip): no choice would be coherent, and its conflicting vertices are kept as non-manifold.
+  // Where a piece meets other faces at edges held by three or more (duplicated faces, fins),
+  // its two orientations may repeat directed edges there: the one repeating fewer wins (a tie:
+  // the orientation most of its faces had, then its first face's), and the piece stays as
+  // given if both repeat more than it did (pieces decided before as they were left, the others
+  // as given), so the input's count of repeated directed edges never grows.
   std::vector<uint32_t> by_rank(pieces.size());
   for (size_t i = 0; i < pieces.size(); ++i)
     by_rank[i] = uint32_t(i);
