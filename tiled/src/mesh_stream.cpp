@@ -209,7 +209,11 @@ std::string read_ply(std::FILE* in, const StreamSink& sink) {
         for (int64_t j = 0; j < int64_t(count); ++j) {
           if (!r.value(p.type, v))
             return "truncated or malformed PLY " + e.name + " " + std::to_string(k);
-          if (int(i) == indices) poly.push_back(int64_t(v));
+          if (int(i) != indices) continue;
+          if (!(std::fabs(v) < 9e18)) // a float list's NaN or 1e37 is no index (nor an int64)
+            return "malformed PLY " + e.name + " " + std::to_string(k) + ": vertex index " +
+                   std::to_string(v);
+          poly.push_back(int64_t(v));
         }
       }
       if (is_vertex) {
