@@ -68,7 +68,7 @@ def simplify(src: Union[str, os.PathLike], dst: Union[str, os.PathLike], *, rati
     if url and client is None:
         raise ValueError(f"a URL work directory ({parent}) is for Dask workers: give a client, "
                          "or a local folder")
-    local = _core.tiled_make_work_dir(os.path.dirname(dst) or "." if url else parent)
+    local = _core.tiled_make_work_dir((os.path.dirname(dst) or ".") if url else parent)
     store = _remote_tiles.open_store(parent) if url else None
     t0 = time.perf_counter()
     levels = []
