@@ -52,10 +52,10 @@ for m in fandisk bunny00; do
   view="--azimuth 30 --elevation 20"
   [ $m = bunny00 ] && view="--azimuth 0 --elevation 0"
   # shellcheck disable=SC2086
-  xvfb-run -a -s '-screen 0 1280x1024x24' "$top/build/bin/vrs_render" "$data/$m.off" "$renders/${m}_original.png" $view
+  "$top/scripts/lib/on_display.sh" "$top/build/bin/vrs_render" "$data/$m.off" "$renders/${m}_original.png" $view
   for method in ours qecd meshopt; do
     # shellcheck disable=SC2086
-    xvfb-run -a -s '-screen 0 1280x1024x24' "$top/build/bin/vrs_render" "$work/${m}_0.01_$method.ply" \
+    "$top/scripts/lib/on_display.sh" "$top/build/bin/vrs_render" "$work/${m}_0.01_$method.ply" \
       "$renders/${m}_$method.png" $view
   done
 done

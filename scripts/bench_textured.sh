@@ -22,7 +22,7 @@ cp "$work/textured.csv" "$top/bench/textured.csv"
   "$cgal"/{fandisk,anchor,blade,couplingdown,joint,cheese-box}.off
 for f in "$work/bunny_charts.ply" "$work/bunny_charts-10-ours.ply" "$work/bunny_charts-10-qecd_texture.ply"; do
   name=$(basename "${f%.ply}")
-  xvfb-run -a "$top/build/bin/vrs_render" "$f" "$top/bench/renders/textured_${name#bunny_charts}.png" \
+  "$top/scripts/lib/on_display.sh" "$top/build/bin/vrs_render" "$f" "$top/bench/renders/textured_${name#bunny_charts}.png" \
     --texture --size 480 400
 done
 "$python" - "$top/bench" <<'PY'

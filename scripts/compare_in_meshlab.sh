@@ -18,7 +18,7 @@ source "$top/scripts/mlx.sh"
 ml=$("$top/scripts/meshlab_private.sh" "$work/meshlab")
 server() { # args...: runs the private meshlabserver, log to $work/log
   (cd "$work" && LD_LIBRARY_PATH=/usr/lib/x86_64-linux-gnu/meshlab \
-    xvfb-run -a "$ml/meshlabserver" "$@" >"$work/log" 2>&1) || {
+    "$top/scripts/lib/on_display.sh" "$ml/meshlabserver" "$@" >"$work/log" 2>&1) || {
     echo "meshlabserver failed ($*):" >&2; tail -20 "$work/log" >&2; return 1; }
 }
 faces=$(awk 'NF && $1 !~ /^#/ { n++; if (n == 2) { print $2; exit } }' "$mesh")

@@ -3,7 +3,7 @@
 # machine's X socket folder (so a program inside can use an Xvfb display started outside) bound
 # in a private mount namespace: the mounts vanish with the command, even if it is killed.
 #   scripts/lib/in_root.sh ROOT COMMAND [ARG...]
-# DISPLAY and HOME are passed in, and the X authority file (as xvfb-run makes one) copied in.
+# DISPLAY and HOME are passed in, and the X authority file (as on_display.sh makes one) copied in.
 set -euo pipefail
 root=$(realpath "${1:?usage: in_root.sh ROOT COMMAND...}")
 shift

@@ -14,7 +14,7 @@ read -r ours_max ours_mean _ < <("$build/bin/vrs_bench" --compare "$mesh" "$out/
   mlx_hausdorff SampledMesh=1 TargetMesh=0 SampleEdge=false SampleNum=200000
   mlx_hausdorff SampledMesh=0 TargetMesh=1 SampleEdge=false SampleNum=200000
   mlx_end; } >"$out/h.mlx"
-(cd "$out" && xvfb-run -a meshlabserver -i "$mesh" -i "$out/simple.ply" -s "$out/h.mlx" >"$out/log" 2>&1) ||
+(cd "$out" && "$top/scripts/lib/on_display.sh" meshlabserver -i "$mesh" -i "$out/simple.ply" -s "$out/h.mlx" >"$out/log" 2>&1) ||
   { echo "FAIL: meshlabserver: $(tail -3 "$out/log")"; exit 1; }
 read -r ml_max ml_mean < <(awk '/^LOG: [0-9]+ Values w.r.t. BBox Diag/ { getline; m = $7 > m ? $7 : m; s += $10; n++ }
   END { if (n == 2) print m, s / 2 }' "$out/log")

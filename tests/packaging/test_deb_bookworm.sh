@@ -27,7 +27,7 @@ check 'dpkg-query -W -f="\${Status}" meshlab-filter-vertex-removal | grep -q "in
 check 'dpkg -L meshlab-filter-vertex-removal | grep -qx "$plugin"' "the package does not hold $plugin"
 
 # The installed files only: the system's meshlabserver, our shipped script.
-xvfb-run -a meshlabserver -i "$top/meshes/fandisk.off" -o "$out/fandisk-10.off" \
+"$top/scripts/lib/on_display.sh" meshlabserver -i "$top/meshes/fandisk.off" -o "$out/fandisk-10.off" \
   -s "$top/plugin/scripts/vertex_removal_10pct.mlx" >"$out/meshlabserver.log" 2>&1
 check '[ -s "$out/fandisk-10.off" ] && [ "$(faces "$out/fandisk-10.off")" -le 1295 ]' \
   "meshlabserver with the installed plugin did not reach 10 % (see $out/meshlabserver.log)"
@@ -40,7 +40,7 @@ check '[ ! -e "$plugin" ]' "the plugin is still in MeshLab's folder after remova
 # shellcheck source=../../scripts/mlx.sh
 source "$top/scripts/mlx.sh"
 { mlx_begin; mlx_qecd TargetFaceNum=1000; mlx_end; } >"$out/qecd.mlx"
-xvfb-run -a meshlabserver -i "$top/meshes/fandisk.off" -o "$out/fandisk-qecd.off" -s "$out/qecd.mlx" \
+"$top/scripts/lib/on_display.sh" meshlabserver -i "$top/meshes/fandisk.off" -o "$out/fandisk-qecd.off" -s "$out/qecd.mlx" \
   >"$out/meshlabserver-after.log" 2>&1
 check '[ -s "$out/fandisk-qecd.off" ] && [ "$(faces "$out/fandisk-qecd.off")" -le 1000 ]' \
   "MeshLab no longer works after the removal (see $out/meshlabserver-after.log)"

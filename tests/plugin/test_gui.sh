@@ -46,7 +46,7 @@ else
   ml=$("$top/scripts/meshlab_private.sh" "$out/meshlab") || exit 1
   plugins=$ml/plugins
 fi
-timeout 180 xvfb-run -a -s '-screen 0 1600x1000x24' bash "$0" --inner "$out" "$ml" "$mesh"
+timeout 180 "$top/scripts/lib/on_display.sh" -s '-screen 0 1600x1000x24' bash "$0" --inner "$out" "$ml" "$mesh"
 
 passed=0 failed=0
 check() { if eval "$1"; then passed=$((passed + 1)); else failed=$((failed + 1)); echo "FAIL: $2"; fi; }

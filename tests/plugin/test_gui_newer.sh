@@ -78,7 +78,7 @@ cp "$deb" "$root/tmp/"
 in_root apt-get install -y -qq "/tmp/$(basename "$deb")" >"$out/install.log" 2>&1 || {
   echo "FAIL: apt-get install ./$(basename "$deb") (see $out/install.log)"; exit 1; }
 mkdir -p "$root/tmp/vrs-gui" "$root/tmp/vrs-home" && cp "$mesh" "$root/tmp/vrs-gui/"
-VRS_GUI_INNER=1 timeout 180 xvfb-run -a -s '-screen 0 1600x1000x24' bash "$0" "$@"
+VRS_GUI_INNER=1 timeout 180 "$here/../../scripts/lib/on_display.sh" -s '-screen 0 1600x1000x24' bash "$0" "$@"
 faces=$(awk 'NF && $1 !~ /^#/ { n++; if (n == 2) { print $2; exit } }' "$mesh")
 half=$(( (faces + 1) / 2 ))
 
@@ -106,7 +106,7 @@ done
 # Removed, MeshLab still starts and opens the mesh (and no longer lists the filter's plugin).
 remove
 check '[ ! -e "$plugin" ]' "the plugin is still there after apt-get remove"
-VRS_GUI_AFTER=1 timeout 120 xvfb-run -a -s '-screen 0 1600x1000x24' bash "$0" "$@"
+VRS_GUI_AFTER=1 timeout 120 "$here/../../scripts/lib/on_display.sh" -s '-screen 0 1600x1000x24' bash "$0" "$@"
 check 'grep -q "All files opened" "$out/meshlab-after.log"' \
   "MeshLab does not open the mesh after the package's removal (see $out/meshlab-after.log)"
 echo "MeshLab $version ($(cat "$root/.meshlab-version")): screenshots in $out"

@@ -1,6 +1,6 @@
 #!/usr/bin/env bash
 # The real meshlabserver running the real plugin (a private copy with its own plugins/ folder,
-# under xvfb-run) on real meshes: every parameter, the output files, vertex colors, the exit
+# on a private Xvfb display) on real meshes: every parameter, the output files, vertex colors, the exit
 # codes of failing scripts, and our filter beside Quadric Edge Collapse Decimation.
 #   test_meshlabserver.sh REPO_ROOT CGAL_DATA_DIR OUT_DIR
 set -u
@@ -15,7 +15,7 @@ fail() { failed=$((failed + 1)); echo "FAIL: $*"; }
 server() { # LOG ARGS...: exit code of the private meshlabserver
   local log=$1; shift
   (cd "$out" && LD_LIBRARY_PATH=/usr/lib/x86_64-linux-gnu/meshlab timeout 300 \
-    xvfb-run -a "$ml/meshlabserver" "$@" >"$log" 2>&1)
+    "$top/scripts/lib/on_display.sh" "$ml/meshlabserver" "$@" >"$log" 2>&1)
 }
 script() { { mlx_begin; "$@"; mlx_end; } >"$out/s.mlx"; }
 ply_count() { awk -v e="$2" '$1 == "element" && $2 == e { print $3; exit } /^end_header/ { exit }' "$1"; }

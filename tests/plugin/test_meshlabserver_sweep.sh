@@ -22,7 +22,7 @@ fail() { failed=$((failed + 1)); echo "FAIL: $*"; }
 server() { # LOG ARGS...: exit code of the private meshlabserver
   local log=$1; shift
   (cd "$out" && LD_LIBRARY_PATH=/usr/lib/x86_64-linux-gnu/meshlab timeout 300 \
-    xvfb-run -a "$ml/meshlabserver" "$@" >"$log" 2>&1)
+    "$top/scripts/lib/on_display.sh" "$ml/meshlabserver" "$@" >"$log" 2>&1)
 }
 ply_vertices() {
   awk '/^element vertex/ { nv = $3 } /^end_header/ { body = 1; next }

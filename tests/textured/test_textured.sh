@@ -30,7 +30,7 @@ case "$mode" in
     source "$tool/scripts/mlx.sh"
     simplify() {
       { mlx_begin; mlx_vertex_removal TargetPerc="$3" TargetFaceNum=0; mlx_end; } >"$out/run.mlx"
-      (cd "$out" && LD_LIBRARY_PATH=/usr/lib/x86_64-linux-gnu/meshlab xvfb-run -a \
+      (cd "$out" && LD_LIBRARY_PATH=/usr/lib/x86_64-linux-gnu/meshlab "$here/../../scripts/lib/on_display.sh" \
         "$ml/meshlabserver" -i "$1" -o "$2" -m wt -s "$out/run.mlx" >"$2.log" 2>&1)
     }
     ;;
