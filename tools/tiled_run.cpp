@@ -80,15 +80,27 @@ int run_tiled(const TiledRequest& r) {
   s.workdir = dir;
   int levels = 0;
   uint64_t input_faces = 0, output_faces = 0;
+  // With --progress, each step's time: what runs in one process (reading, cutting, writing)
+  // against what the workers share.
+  auto lap = [&, t = t0](const char* step) mutable {
+    const auto now = clock::now();
+    if (r.progress)
+      std::fprintf(stderr, "  %s: %.2f s\n", step, std::chrono::duration<double>(now - t).count());
+    t = now;
+  };
   try {
     vrs::tiled::Level level = vrs::tiled::begin(r.input, s);
+    lap("read and cut into tiles");
     input_faces = level.faces;
     while (level.tiles > 0) {
       vrs::tiled::run_level_locally(dir, level, workers, r.progress);
+      lap("tiles simplified");
       ++levels;
       level = vrs::tiled::next_level(dir);
+      lap(level.tiles > 0 ? "cut into tiles" : "checked");
     }
     output_faces = vrs::tiled::finish(dir, r.output);
+    lap("written");
   } catch (const std::exception& e) {
     if (!r.keep_workdir) vrs::tiled::discard(dir);
     std::fprintf(stderr, "vrsimplify: %s\n", e.what());

@@ -1,14 +1,20 @@
-// The embedded default: a level's tiles on local worker processes, each taking every
-// workers-th tile, so that each holds one tile at a time and a tile's memory is returned to the
-// system when its process ends.
+// The embedded default: a level's tiles on local worker processes, each taking the next tile
+// not yet taken, largest first (a counter in memory the processes share), so that tiles of
+// unequal sizes keep every process busy to the end; each holds one tile at a time, and a
+// tile's memory is returned to the system when its process ends.
 #include <algorithm>
+#include <atomic>
 #include <cstdio>
+#include <new>
+#include <numeric>
 #include <stdexcept>
 #include <vector>
 
+#include <sys/mman.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include "tile_files.h"
 #include "vrs/tiled.h"
 
 namespace vrs::tiled {
@@ -21,16 +27,33 @@ void run_level_locally(const std::string& workdir, const Level& level, int worke
     std::fprintf(stderr, "level %d: %llu faces in %llu tiles on %d processes, keeping %.3g\n",
                  level.level, (unsigned long long)level.faces, (unsigned long long)level.tiles,
                  workers, level.ratio);
+  std::vector<uint64_t> order(level.tiles), size(level.tiles);
+  for (uint64_t t = 0; t < level.tiles; ++t)
+    size[t] = record_count(tile_path(workdir, level.level, t, ".in"));
+  std::iota(order.begin(), order.end(), uint64_t(0));
+  std::stable_sort(order.begin(), order.end(),
+                   [&](uint64_t a, uint64_t b) { return size[a] > size[b]; });
   std::fflush(nullptr);
+  void* shared = mmap(nullptr, sizeof(std::atomic<uint64_t>), PROT_READ | PROT_WRITE,
+                      MAP_SHARED | MAP_ANONYMOUS, -1, 0);
+  if (shared == MAP_FAILED) throw std::runtime_error("cannot share memory with the workers");
+  auto* next = new (shared) std::atomic<uint64_t>(0);
+  static_assert(std::atomic<uint64_t>::is_always_lock_free, "shared between processes");
   std::vector<pid_t> children;
-  for (int w = 0; w < workers; ++w) {
+  bool failed = false;
+  for (int w = 0; w < workers && !failed; ++w) {
     const pid_t pid = fork();
-    if (pid < 0) throw std::runtime_error("cannot start a worker process");
+    if (pid < 0) {
+      std::fprintf(stderr, "vrsimplify: cannot start a worker process\n");
+      failed = true;
+      next->store(level.tiles); // the others stop after their tile
+      break;
+    }
     if (pid == 0) {
       int status = 0;
       try {
-        for (uint64_t t = uint64_t(w); t < level.tiles; t += uint64_t(workers))
-          run_tile(workdir, level.level, t, cores);
+        for (uint64_t i = next->fetch_add(1); i < level.tiles; i = next->fetch_add(1))
+          run_tile(workdir, level.level, order[i], cores);
       } catch (const std::exception& e) {
         std::fprintf(stderr, "vrsimplify: %s\n", e.what());
         status = 1;
@@ -40,12 +63,12 @@ void run_level_locally(const std::string& workdir, const Level& level, int worke
     }
     children.push_back(pid);
   }
-  bool failed = false;
   for (pid_t pid : children) {
     int status = 0;
     if (waitpid(pid, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
       failed = true;
   }
+  munmap(shared, sizeof(std::atomic<uint64_t>));
   if (failed) throw std::runtime_error("a tile worker failed (its message is above)");
 }
 

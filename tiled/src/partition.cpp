@@ -94,14 +94,6 @@ uint64_t partition(const std::string& dir, int level, uint64_t vertex_count, con
     for (uint32_t v : r.v)
       owner[v] = owner[v] == kNone || owner[v] == t ? t : kShared;
   });
-  // Locked: a shared vertex, and every corner of a face that has one.
-  std::vector<uint8_t> lock(vertex_count, 0);
-  source([&](const FaceRecord& r) {
-    if (owner[r.v[0]] == kShared || owner[r.v[1]] == kShared || owner[r.v[2]] == kShared)
-      lock[r.v[0]] = lock[r.v[1]] = lock[r.v[2]] = 1;
-  });
-  owner = {};
-
   make_dir(dir + "/L" + std::to_string(level));
   for (uint32_t first = 0; first < tiles; first += uint32_t(kOpenTiles)) {
     const uint32_t last = std::min<uint32_t>(tiles, first + uint32_t(kOpenTiles));
@@ -112,7 +104,8 @@ uint64_t partition(const std::string& dir, int level, uint64_t vertex_count, con
       const uint32_t t = tile(r);
       if (t < first || t >= last) return;
       FaceRecord w = r;
-      w.locked = uint8_t(lock[r.v[0]] | lock[r.v[1]] << 1 | lock[r.v[2]] << 2);
+      w.shared = uint8_t((owner[r.v[0]] == kShared) | (owner[r.v[1]] == kShared) << 1 |
+                         (owner[r.v[2]] == kShared) << 2);
       out[t - first]->write(&w, sizeof w);
     });
     for (auto& w : out)

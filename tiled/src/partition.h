@@ -1,9 +1,9 @@
 // Cutting a level's faces into tiles: an octree over a 64^3 grid of the input's bounding box,
 // split until each leaf holds at most the tile budget, its origin moved by a few cells on even
 // levels so that the previous level's borders fall inside tiles. A face belongs to the tile of
-// its centroid. A vertex used by two tiles is locked in both, and so are
-// the other corners of its faces: removing a vertex never adds an edge at a tile border, so
-// tiles cannot disagree there, and a watertight input joins without a crack.
+// its centroid. A vertex used by two tiles is marked shared in both; the tile locks it and the
+// other corners of its faces (see run_tile): removing a vertex never adds an edge at a tile
+// border, so tiles cannot disagree there, and a watertight input joins without a crack.
 #pragma once
 
 #include <cstdint>

@@ -4,8 +4,8 @@
 //   vertices.bin        the input's positions, float xyz, in input order (for the output)
 //   faces.bin           the input's triangles, uint32 x3 (level 1 reads it)
 //   state               the run's settings and where it stands (key value lines)
-//   L<level>/<tile>.in  one tile's faces as records (below), vertices locked where marked
-//   L<level>/<tile>.out the tile simplified, as records
+//   L<level>/<tile>.in  one tile's faces as records (below), vertices shared with other tiles
+//   marked L<level>/<tile>.out the tile simplified, as records
 #pragma once
 
 #include <cstdint>
@@ -21,7 +21,7 @@ namespace vrs::tiled {
 struct FaceRecord {
   uint32_t v[3];
   float p[3][3];
-  uint8_t locked; // bit c: corner c's vertex is locked in this tile (a border, or next to one)
+  uint8_t shared; // bit c: corner c's vertex is also in another tile (a border)
   uint8_t pad[3];
 };
 static_assert(sizeof(FaceRecord) == 52, "records are written as they are");

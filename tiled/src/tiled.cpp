@@ -187,13 +187,15 @@ void run_tile(const std::string& dir, int level, uint64_t tile, int lone_threads
   vrs::Mesh mesh;
   mesh.positions.resize(3 * ids.size());
   mesh.triangles.resize(3 * in.size());
+  // Locked: every corner of a face at the border (one with a shared corner). A vertex that is
+  // not shared has all its faces in this tile, so the tile sees every face that locks it.
   std::vector<uint8_t> locked(ids.size(), 0);
   for (size_t f = 0; f < in.size(); ++f)
     for (int c = 0; c < 3; ++c) {
       const uint32_t l = local(in[f].v[c]);
       mesh.triangles[3 * f + c] = l;
       std::memcpy(&mesh.positions[3 * size_t(l)], in[f].p[c], 12);
-      if (in[f].locked >> c & 1) locked[l] = 1;
+      if (in[f].shared) locked[l] = 1;
     }
   // On the first two levels the ratio applies to the faces the tile may change: asking the
   // faces along its locked border to go too makes the rest of the tile go further than the
@@ -204,10 +206,11 @@ void run_tile(const std::string& dir, int level, uint64_t tile, int lone_threads
   // the last level, in core over the whole mesh, then spends the faces where the surface needs
   // them, not evenly per tile (1 % of a 2 M-face terrain in 222 tiles: max error 3.0 times the
   // in-core one's without, 0.99 times with).
-  uint64_t bordering = 0;
-  for (const FaceRecord& r : in)
-    bordering += r.locked != 0;
   in = {};
+  uint64_t bordering = 0; // faces with a locked corner
+  for (size_t f = 0; f < mesh.face_count(); ++f)
+    bordering += (locked[mesh.triangles[3 * f]] | locked[mesh.triangles[3 * f + 1]] |
+                  locked[mesh.triangles[3 * f + 2]]) != 0;
   const bool alone = state_number(s, "tiles") == 1;
   const double keep = keep_of(s);
   vrs::Options opt;
