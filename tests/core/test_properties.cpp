@@ -39,7 +39,9 @@ TEST_P(RealMesh, KeepsTheInvariants) {
   EXPECT_EQ(vrs_test::count_duplicate_directed_edges(m), 0u);
   // Flipped against the original surface: the new face and its corners' input normals disagree
   // (the promise while the input-normal veto holds: not after the last-resort pass).
-  if (r.relaxed_removals == 0) EXPECT_EQ(vrs_test::count_flipped(in, m, r), 0u);
+  if (r.relaxed_removals == 0) {
+    EXPECT_EQ(vrs_test::count_flipped(in, m, r), 0u);
+  }
   // Turned over against every input face near it: never.
   EXPECT_EQ(vrs_test::count_fold_overs(in, m, r), 0u);
 
