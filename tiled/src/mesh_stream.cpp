@@ -77,6 +77,23 @@ struct PlyReader {
   std::string token_line; // ascii: the current line's remaining tokens
   size_t token_pos = 0;
   bool failed = false;
+  // Binary values come out of this buffer, not a stdio call each (a quarter of the streaming
+  // pass went to fread's locking and calls).
+  std::vector<unsigned char> buf = std::vector<unsigned char>(size_t(1) << 16);
+  size_t pos = 0, len = 0;
+
+  bool take(unsigned char* b, size_t n) {
+    if (len - pos < n) {
+      std::memmove(buf.data(), buf.data() + pos, len - pos);
+      len -= pos;
+      pos = 0;
+      len += std::fread(buf.data() + len, 1, buf.size() - len, in);
+      if (len < n) return false;
+    }
+    std::memcpy(b, buf.data() + pos, n);
+    pos += n;
+    return true;
+  }
 
   bool next_token(std::string& tok) {
     for (;;) {
@@ -104,7 +121,7 @@ struct PlyReader {
     }
     unsigned char b[8];
     const size_t n = size_of(t);
-    if (std::fread(b, 1, n, in) != n) return false;
+    if (!take(b, n)) return false;
     const bool swap = (enc == Encoding::Big) != (__BYTE_ORDER__ == __ORDER_BIG_ENDIAN__);
     if (swap)
       for (size_t i = 0; i < n / 2; ++i)

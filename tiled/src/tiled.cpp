@@ -296,7 +296,7 @@ uint64_t finish(const std::string& dir, const std::string& output) {
     if (i) i = ++next;
   const bool obj = output.size() >= 4 && (output.compare(output.size() - 4, 4, ".obj") == 0 ||
                                           output.compare(output.size() - 4, 4, ".OBJ") == 0);
-  RecordWriter out(output);
+  RecordWriter out(output, /*durable=*/true);
   char line[128];
   if (!obj) {
     const std::string header = "ply\nformat binary_little_endian 1.0\ncomment vrsimplify, tiled\n"
@@ -349,7 +349,7 @@ std::string make_work_dir(const std::string& parent) {
   if (mkdir(base.c_str(), 0755) != 0 && errno != EEXIST)
     throw std::runtime_error("cannot make the work directory " + base + ": " +
                              std::strerror(errno));
-  std::string path = base + "/vrsimplify-tiles-XXXXXX";
+  std::string path = base + (base.back() == '/' ? "" : "/") + "vrsimplify-tiles-XXXXXX";
   if (!mkdtemp(path.data()))
     throw std::runtime_error("cannot make a work directory in " + base + ": " +
                              std::strerror(errno));
