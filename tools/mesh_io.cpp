@@ -2,8 +2,14 @@
 
 #include "vcg_mesh.h"
 
+#include <cerrno>
+#include <csignal>
+#include <cstdio>
+#include <cstring>
 #include <fstream>
 #include <sstream>
+
+#include <unistd.h>
 
 #include <vcg/complex/algorithms/clean.h>
 #include <vcg/complex/algorithms/update/bounding.h>
@@ -153,28 +159,42 @@ void apply(VcgDocument& doc, const vrs::Mesh& simplified, const vrs::Report& rep
   vcg::tri::UpdateBounding<VcgMesh>::Box(m);
 }
 
-std::string save(VcgDocument& doc, const std::string& path, bool ascii) {
+namespace {
+
+// The exporter's own message on failure, empty on success.
+std::string write_as(VcgDocument& doc, const std::string& path, bool ascii) {
   using vcg::tri::io::Mask;
   int mask = doc.mask & (Mask::IOM_VERTCOORD | Mask::IOM_VERTNORMAL | Mask::IOM_VERTCOLOR |
                          Mask::IOM_VERTQUALITY | Mask::IOM_VERTTEXCOORD | Mask::IOM_VERTFLAGS |
                          Mask::IOM_WEDGTEXCOORD | Mask::IOM_WEDGNORMAL | Mask::IOM_FACECOLOR);
-  int err;
   if (ends_with(path, ".ply")) {
-    err = vcg::tri::io::ExporterPLY<VcgMesh>::Save(doc.mesh, path.c_str(), mask, !ascii);
-    if (err)
-      return std::string("cannot write ") + path + ": " +
-             vcg::tri::io::ExporterPLY<VcgMesh>::ErrorMsg(err);
-    return {};
+    const int err = vcg::tri::io::ExporterPLY<VcgMesh>::Save(doc.mesh, path.c_str(), mask, !ascii);
+    return err ? vcg::tri::io::ExporterPLY<VcgMesh>::ErrorMsg(err) : "";
   }
-  if (ends_with(path, ".obj")) {
-    std::string e = write_obj(path, doc);
-    return e.empty() ? e : "cannot write " + path + ": " + e;
-  }
-  err = vcg::tri::io::Exporter<VcgMesh>::Save(doc.mesh, path.c_str(), mask);
-  if (err)
-    return std::string("cannot write ") + path + ": " +
-           vcg::tri::io::Exporter<VcgMesh>::ErrorMsg(err);
-  return {};
+  if (ends_with(path, ".obj")) return write_obj(path, doc);
+  const int err = vcg::tri::io::Exporter<VcgMesh>::Save(doc.mesh, path.c_str(), mask);
+  return err ? vcg::tri::io::Exporter<VcgMesh>::ErrorMsg(err) : "";
+}
+
+} // namespace
+
+std::string save(VcgDocument& doc, const std::string& path, bool ascii) {
+  // Under a temporary name beside the output (same extension: it picks the format), renamed
+  // once whole, with Ctrl-C and kill held meanwhile: a failed or interrupted write never leaves
+  // a half-written file, under either name.
+  const size_t slash = path.rfind('/');
+  const std::string tmp = path.substr(0, slash + 1) + ".vrsimplify-" + std::to_string(getpid()) +
+                          "-" + path.substr(slash + 1);
+  sigset_t hold, before;
+  sigemptyset(&hold);
+  for (int sig : {SIGINT, SIGTERM, SIGHUP})
+    sigaddset(&hold, sig);
+  sigprocmask(SIG_BLOCK, &hold, &before);
+  std::string err = write_as(doc, tmp, ascii);
+  if (err.empty() && std::rename(tmp.c_str(), path.c_str()) != 0) err = std::strerror(errno);
+  if (!err.empty()) std::remove(tmp.c_str());
+  sigprocmask(SIG_SETMASK, &before, nullptr);
+  return err.empty() ? err : "cannot write " + path + ": " + err;
 }
 
 } // namespace vrs_tool

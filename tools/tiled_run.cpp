@@ -13,6 +13,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "interrupt_guard.h"
 #include "vrs/tiled.h"
 
 namespace vrs_tool {
@@ -54,12 +55,12 @@ int run_on_dask(const TiledRequest& r) {
   return 1;
 }
 
+int run_in(const std::string& dir, const TiledRequest& r, int workers);
+
 } // namespace
 
 int run_tiled(const TiledRequest& r) {
   if (!r.scheduler.empty()) return run_on_dask(r);
-  using clock = std::chrono::steady_clock;
-  const auto t0 = clock::now();
   const int workers =
       std::min(vrs::tiled::kTilesInMemory,
                r.workers > 0 ? r.workers : int(std::max(1u, std::thread::hardware_concurrency())));
@@ -74,6 +75,23 @@ int run_tiled(const TiledRequest& r) {
     std::fprintf(stderr, "vrsimplify: %s\n", e.what());
     return 1;
   }
+  // Interrupted or killed, a run leaves nothing behind: its work directory (about twice the
+  // input's size) and a partial output go with it, removed by a parent that outlives it.
+  return run_guarded([&] { return run_in(dir, r, workers); },
+                     [&](pid_t child, int sig) {
+                       if (!r.keep_workdir) vrs::tiled::discard(dir);
+                       std::remove((r.output + ".tmp." + std::to_string(child)).c_str());
+                       std::fprintf(stderr, "vrsimplify: stopped (%s); %s %s\n",
+                                    sig ? strsignal(sig) : "lost",
+                                    r.keep_workdir ? "kept" : "removed", dir.c_str());
+                     });
+}
+
+namespace {
+
+int run_in(const std::string& dir, const TiledRequest& r, int workers) {
+  using clock = std::chrono::steady_clock;
+  const auto t0 = clock::now();
   vrs::tiled::Settings s;
   s.ratio = r.ratio;
   s.faces_per_tile = vrs::tiled::faces_for_memory(r.memory);
@@ -124,5 +142,7 @@ int run_tiled(const TiledRequest& r) {
                 seconds);
   return 0;
 }
+
+} // namespace
 
 } // namespace vrs_tool

@@ -190,5 +190,10 @@ mkdir -p "$out/scratch" && echo mine >"$out/scratch/keep.txt"
 "$bin" "$in" "$out/x.ply" --faces 100 --memory 1M 2>"$out/err"; [ $? -eq 2 ] && grep -q "take --ratio only" "$out/err" && ok ||
   fail "--faces with tiles: $(cat "$out/err")"
 
+# Outputs are written under a temporary name beside them and renamed once whole: after every
+# run above, written or refused, none is left.
+left=$(find "$out" -name '.vrsimplify-*')
+[ -z "$left" ] && ok || fail "temporary outputs left: $left"
+
 echo "$passed passed, $failed failed"
 [ "$failed" -eq 0 ]

@@ -4,6 +4,7 @@
 // tile's memory is returned to the system when its process ends.
 #include <algorithm>
 #include <atomic>
+#include <csignal>
 #include <cstdio>
 #include <new>
 #include <numeric>
@@ -11,6 +12,7 @@
 #include <vector>
 
 #include <sys/mman.h>
+#include <sys/prctl.h>
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -39,6 +41,7 @@ void run_level_locally(const std::string& workdir, const Level& level, int worke
   if (shared == MAP_FAILED) throw std::runtime_error("cannot share memory with the workers");
   auto* next = new (shared) std::atomic<uint64_t>(0);
   static_assert(std::atomic<uint64_t>::is_always_lock_free, "shared between processes");
+  const pid_t driver = getpid();
   std::vector<pid_t> children;
   bool failed = false;
   for (int w = 0; w < workers && !failed; ++w) {
@@ -50,6 +53,9 @@ void run_level_locally(const std::string& workdir, const Level& level, int worke
       break;
     }
     if (pid == 0) {
+      // Killed with the driver, not left writing into a work directory being removed.
+      prctl(PR_SET_PDEATHSIG, SIGKILL);
+      if (getppid() != driver) _exit(1);
       int status = 0;
       try {
         for (uint64_t i = next->fetch_add(1); i < level.tiles; i = next->fetch_add(1))
