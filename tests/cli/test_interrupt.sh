@@ -17,7 +17,8 @@ mkdir "$out/run"
 # how: ctrl-c | term | hup | kill-driver; expected exit status
 stop_run() {
   local how=$1 want=$2
-  "$bin" "$out/terrain.ply" "$out/run/o.ply" --ratio 0.01 --memory 16M --workers 2 2>"$out/err" &
+  # As from a terminal even if this script was started with SIGINT ignored (a background job).
+  env --default-signal=INT,TERM,HUP "$bin" "$out/terrain.ply" "$out/run/o.ply" --ratio 0.01 --memory 16M --workers 2 2>"$out/err" &
   local pid=$!
   # Stopped while tile workers run (the guard, the driver and at least one worker).
   local running=0
