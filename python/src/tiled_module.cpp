@@ -64,7 +64,12 @@ void register_tiled(nb::module_& m) {
         [](const std::string& workdir, const nb::dict& level, int workers, bool progress) {
           const vrs::tiled::Level l = level_of(level);
           guarded([&] {
-            vrs::tiled::run_level_locally(workdir, l, workers, progress);
+            // Ctrl-C: KeyboardInterrupt, once the workers are gone (Python's handler only
+            // notes the signal; it is run here).
+            vrs::tiled::run_level_locally(workdir, l, workers, progress, [] {
+              nb::gil_scoped_acquire acquire;
+              if (PyErr_CheckSignals() != 0) throw nb::python_error();
+            });
             return 0;
           });
         });

@@ -1,10 +1,12 @@
 """Tiled runs through the package: a ~1.3 M-face closed mesh cut into tiles (a small memory
 budget forces them), on local processes and on a real Dask cluster (a LocalCluster of two
 worker processes): the same output byte for byte, watertight, every vertex an input vertex,
-the target met; a worker killed mid-run changes nothing; bad input is a clear error that
-leaves nothing behind."""
+the target met; a worker killed mid-run changes nothing; Ctrl-C leaves nothing; bad input is
+a clear error that leaves nothing behind."""
 import os
 import signal
+import subprocess
+import sys
 import threading
 import time
 
@@ -130,6 +132,35 @@ def test_one_worker_or_two_the_same_output(big, tmp_path):
     v2 = np.array([[float(x) for x in l.split()[1:]] for l in lines if l.startswith("v ")])
     f2 = np.array([[int(x) - 1 for x in l.split()[1:]] for l in lines if l.startswith("f ")])
     assert np.array_equal(v1, v2.astype(np.float32)) and np.array_equal(f1, f2)
+
+
+def test_ctrl_c_stops_the_workers_and_leaves_nothing(big, tmp_path):
+    """Ctrl-C (SIGINT to the Python process alone, while its local workers run tiles) raises
+    KeyboardInterrupt once the workers are killed and reaped: no worker left running, no work
+    directory, no output."""
+    src, _, _ = big
+    out = tmp_path / "out.ply"
+    code = ("import signal, sys, vrsimplify.tiled\n"
+            "signal.signal(signal.SIGINT, signal.default_int_handler)\n"  # as in a terminal
+            "vrsimplify.tiled.simplify(sys.argv[1], sys.argv[2], ratio=0.01, memory='64M', workers=2)\n")
+    proc = subprocess.Popen([sys.executable, "-c", code, str(src), str(out)],
+                            stderr=subprocess.PIPE, text=True)
+    workers = []
+    deadline = time.monotonic() + 120
+    while len(workers) < 2 and proc.poll() is None and time.monotonic() < deadline:
+        time.sleep(0.05)
+        try:
+            workers = open(f"/proc/{proc.pid}/task/{proc.pid}/children").read().split()
+        except OSError:
+            pass
+    assert len(workers) == 2, "the workers never ran"
+    proc.send_signal(signal.SIGINT)
+    _, err = proc.communicate(timeout=60)
+    assert proc.returncode != 0 and "KeyboardInterrupt" in err, err
+    for pid in workers:
+        assert not os.path.exists(f"/proc/{pid}"), f"worker {pid} outlived the run"
+    assert not out.exists() and not list(tmp_path.glob("vrsimplify-tiles-*"))
+    assert not list(tmp_path.glob("*.tmp.*"))
 
 
 def test_bad_input_is_a_clear_error_and_leaves_nothing(big, tmp_path):

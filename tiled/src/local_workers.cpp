@@ -4,6 +4,7 @@
 // tile's memory is returned to the system when its process ends.
 #include <algorithm>
 #include <atomic>
+#include <cerrno>
 #include <csignal>
 #include <cstdio>
 #include <new>
@@ -21,7 +22,8 @@
 
 namespace vrs::tiled {
 
-void run_level_locally(const std::string& workdir, const Level& level, int workers, bool progress) {
+void run_level_locally(const std::string& workdir, const Level& level, int workers, bool progress,
+                       const std::function<void()>& interrupted) {
   const int cores = std::max(workers, 1); // a lone tile's threads
   workers = int(std::max<uint64_t>(1, std::min<uint64_t>({uint64_t(std::max(workers, 1)),
                                                           uint64_t(kTilesInMemory), level.tiles})));
@@ -53,9 +55,12 @@ void run_level_locally(const std::string& workdir, const Level& level, int worke
       break;
     }
     if (pid == 0) {
-      // Killed with the driver, not left writing into a work directory being removed.
+      // Killed with the driver, not left writing into a work directory being removed; and by
+      // Ctrl-C, whatever handler the driver (Python) has for it.
       prctl(PR_SET_PDEATHSIG, SIGKILL);
       if (getppid() != driver) _exit(1);
+      for (int sig : {SIGINT, SIGTERM, SIGHUP})
+        std::signal(sig, SIG_DFL);
       int status = 0;
       try {
         for (uint64_t i = next->fetch_add(1); i < level.tiles; i = next->fetch_add(1))
@@ -69,10 +74,23 @@ void run_level_locally(const std::string& workdir, const Level& level, int worke
     }
     children.push_back(pid);
   }
-  for (pid_t pid : children) {
+  for (size_t c = 0; c < children.size(); ++c) {
     int status = 0;
-    if (waitpid(pid, &status, 0) < 0 || !WIFEXITED(status) || WEXITSTATUS(status) != 0)
-      failed = true;
+    while (waitpid(children[c], &status, 0) < 0 && errno == EINTR) {
+      // A signal: the caller decides whether the run goes on. If not, no worker outlives it.
+      try {
+        if (interrupted) interrupted();
+      } catch (...) {
+        for (size_t k = c; k < children.size(); ++k)
+          kill(children[k], SIGKILL);
+        for (size_t k = c; k < children.size(); ++k)
+          while (waitpid(children[k], nullptr, 0) < 0 && errno == EINTR) {
+          }
+        munmap(shared, sizeof(std::atomic<uint64_t>));
+        throw;
+      }
+    }
+    if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) failed = true;
   }
   munmap(shared, sizeof(std::atomic<uint64_t>));
   if (failed) throw std::runtime_error("a tile worker failed (its message is above)");

@@ -13,6 +13,7 @@
 
 #include <cstddef>
 #include <cstdint>
+#include <functional>
 #include <string>
 
 namespace vrs::tiled {
@@ -62,7 +63,9 @@ bool fits_in_core(uint64_t faces, uint64_t bytes);
 uint64_t parse_memory(const std::string& text);
 
 // Runs every tile of `level` on `workers` local processes (fork; at most kTilesInMemory): the
-// embedded default.
-void run_level_locally(const std::string& workdir, const Level& level, int workers, bool progress);
+// embedded default. When a signal interrupts the wait, `interrupted` (if any) is called: if it
+// throws, the workers are killed and reaped, then the exception goes on (Python's Ctrl-C).
+void run_level_locally(const std::string& workdir, const Level& level, int workers, bool progress,
+                       const std::function<void()>& interrupted = {});
 
 } // namespace vrs::tiled
