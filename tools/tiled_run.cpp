@@ -80,7 +80,7 @@ int run_tiled(const TiledRequest& r) {
   return run_guarded([&] { return run_in(dir, r, workers); },
                      [&](pid_t child, int sig) {
                        if (!r.keep_workdir) vrs::tiled::discard(dir);
-                       std::remove((r.output + ".tmp." + std::to_string(child)).c_str());
+                       std::remove(vrs::tiled::unfinished_name(r.output, child).c_str());
                        std::fprintf(stderr, "vrsimplify: stopped (%s); %s %s\n",
                                     sig ? strsignal(sig) : "lost",
                                     r.keep_workdir ? "kept" : "removed", dir.c_str());

@@ -7,6 +7,7 @@
 #include <cerrno>
 #include <csignal>
 #include <cstdio>
+#include <memory>
 #include <new>
 #include <numeric>
 #include <stdexcept>
@@ -41,6 +42,8 @@ void run_level_locally(const std::string& workdir, const Level& level, int worke
   void* shared = mmap(nullptr, sizeof(std::atomic<uint64_t>), PROT_READ | PROT_WRITE,
                       MAP_SHARED | MAP_ANONYMOUS, -1, 0);
   if (shared == MAP_FAILED) throw std::runtime_error("cannot share memory with the workers");
+  const std::unique_ptr<void, void (*)(void*)> unmap(
+      shared, [](void* p) { munmap(p, sizeof(std::atomic<uint64_t>)); });
   auto* next = new (shared) std::atomic<uint64_t>(0);
   static_assert(std::atomic<uint64_t>::is_always_lock_free, "shared between processes");
   const pid_t driver = getpid();
@@ -86,13 +89,11 @@ void run_level_locally(const std::string& workdir, const Level& level, int worke
         for (size_t k = c; k < children.size(); ++k)
           while (waitpid(children[k], nullptr, 0) < 0 && errno == EINTR) {
           }
-        munmap(shared, sizeof(std::atomic<uint64_t>));
         throw;
       }
     }
     if (!WIFEXITED(status) || WEXITSTATUS(status) != 0) failed = true;
   }
-  munmap(shared, sizeof(std::atomic<uint64_t>));
   if (failed) throw std::runtime_error("a tile worker failed (its message is above)");
 }
 

@@ -1,5 +1,7 @@
 #include "tile_files.h"
 
+#include "vrs/tiled.h"
+
 #include <cerrno>
 #include <cstring>
 #include <stdexcept>
@@ -18,8 +20,12 @@ namespace {
 
 } // namespace
 
+std::string unfinished_name(const std::string& path, long pid) {
+  return path + ".tmp." + std::to_string(pid);
+}
+
 RecordWriter::RecordWriter(std::string path, bool durable)
-    : path_(std::move(path)), tmp_(path_ + ".tmp." + std::to_string(getpid())), durable_(durable) {
+    : path_(std::move(path)), tmp_(unfinished_name(path_, getpid())), durable_(durable) {
   f_ = std::fopen(tmp_.c_str(), "wb");
   if (!f_) fail("cannot write " + tmp_);
   std::setvbuf(f_, nullptr, _IOFBF, 1 << 16);

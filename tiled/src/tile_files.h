@@ -4,8 +4,8 @@
 //   vertices.bin        the input's positions, float xyz, in input order (for the output)
 //   faces.bin           the input's triangles, uint32 x3 (level 1 reads it)
 //   state               the run's settings and where it stands (key value lines)
-//   L<level>/<tile>.in  one tile's faces as records (below), vertices shared with other tiles
-//   marked L<level>/<tile>.out the tile simplified, as records
+//   L<level>/<tile>.in  one tile's faces as records (below), shared vertices marked
+//   L<level>/<tile>.out the tile simplified, as records
 #pragma once
 
 #include <cstdint>

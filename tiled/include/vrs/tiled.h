@@ -44,6 +44,9 @@ Level next_level(const std::string& workdir);
 // Writes the output (.ply binary, or .obj) atomically: the input's vertices that faces still
 // use, in input order, and the faces. Returns the output's face count.
 uint64_t finish(const std::string& workdir, const std::string& output);
+// The temporary name process `pid` writes `path` under until it is whole (then renamed): what
+// to remove when that process was killed.
+std::string unfinished_name(const std::string& path, long pid);
 
 // Makes a fresh work directory inside `parent` (made if missing; "" = the current one), named
 // vrsimplify-tiles-XXXXXX, and returns its path: a run never writes into, nor removes, a folder
