@@ -89,6 +89,15 @@ bool run_method(const std::string& method, const vrs::Mesh& in, size_t target,
         o.lazy_reevaluation = false;
       else if (p == "bound") // track the certified error bound, no limit
         o.max_error = std::numeric_limits<double>::infinity();
+      else if (p.rfind("fa", 0) == 0 && p.size() > 2 &&
+               std::isdigit(static_cast<unsigned char>(p[2])))
+        o.feature_angle_deg = std::atof(p.c_str() + 2); // crease angle, e.g. ours-fa70
+      else if (p == "norelax")                          // stop short instead of the last resort
+        o.relax_to_reach_target = false;
+      else if (p == "input")
+        o.against_input = true;
+      else if (p == "noinput")
+        o.against_input = false;
       else if (p == "heap")
         o.queue = vrs::QueueKind::Heap;
       else if (p.rfind("int", 0) == 0 && p.size() > 3)

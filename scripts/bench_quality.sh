@@ -1,12 +1,13 @@
 #!/usr/bin/env bash
 # Error, targets and fold-overs over whole data sets, not the six meshes the benchmark tunes on:
 # every mesh of CGAL's data set and every OBJ/PLY/STL/OFF model of assimp's test models (Debian
-# packages) of at least 200 faces, at 50 %, 10 % and 1 %. Methods, side by side in one run:
+# packages) of at least 200 faces, and the CAD data set (bench/cad/make_parts.py: parts modelled in
+# build123d, exported to STL), at 50 %, 10 % and 1 %. Methods, side by side in one run:
 # the default ("ours"), the boundary simplified ("ours-boundary", for the open meshes, as QECD
 # does), the paper's factor ("ours-factor"), the vertex-keeping class (MeshLab's QECD with
 # optimal placement off, OpenMesh's decimater with its quadric module, meshoptimizer,
 # vtkDecimatePro), MeshLab's QECD with its defaults (the yardstick) and with Preserve Topology,
-# and the core of BASELINE (default: 57dcb5e, the last commit before this work; built once into
+# and the core of BASELINE (default: c17c674, main before the tail work of issue 28; built once into
 # $VRS_CACHE). One job per core (meshes shared out), one thread per run. Writes
 # bench/quality.csv and bench/QUALITY.md (bench/quality_report.py: medians and clamped
 # geometric means, the class table, the held-out meshes apart, the worst runs).
@@ -17,7 +18,7 @@
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
 cache=${VRS_CACHE:-/var/cache/vrsimplify}
-samples=30000 baseline=57dcb5e only=() tuning=0 csv="" \
+samples=30000 baseline=c17c674 only=() tuning=0 csv="" \
   methods=ours,ours-boundary,ours-factor,qecd,qecd-topology,qecd-keep,openmesh,meshopt,vtk
 while [ $# -gt 0 ]; do
   case $1 in
@@ -51,7 +52,7 @@ if [ "$baseline" != none ]; then
 fi
 
 files=()
-while IFS= read -r f; do files+=("$f"); done < <("$top/scripts/lib/bench_meshes.sh")
+while IFS= read -r f; do files+=("$f"); done < <("$top/scripts/lib/bench_meshes.sh" --cad)
 report=0
 [ -n "$csv" ] || { csv=$top/bench/quality.csv; report=1; }
 work=$(mktemp -d)
@@ -60,7 +61,7 @@ header="set,mesh,input_faces,open,ratio,target_faces,method,output_faces,output_
 one_mesh() { # file scratch-dir: its rows on stdout
   local f=$1 scratch=$2 name set_name info faces open
   name=$(basename "$f"); name=${name%.*}
-  case $f in /usr/share/assimp/*) set_name=assimp ;; *) set_name=cgal ;; esac
+  case $f in /usr/share/assimp/*) set_name=assimp ;; */cad-parts-*) set_name=cad ;; *) set_name=cgal ;; esac
   if [ ${#only[@]} -gt 0 ] && ! printf '%s\n' "${only[@]}" | grep -qx "$name"; then return; fi
   if [ "$tuning" -eq 1 ] && python3 -c 'import hashlib,sys; s,m=sys.argv[1:3]; sys.exit(0 if m not in {"bunny00","armadillo","fandisk","mushroom","three_peaks","elephant"} and hashlib.sha1(f"{s}/{m}".encode()).digest()[0] % 4 == 0 else 1)' "$set_name" "$name"; then
     return 0 # held out: never in a tuning loop (bench/quality_report.py names them)
@@ -95,6 +96,9 @@ done
 wait
 { echo "$header"; sort -t, -k1,2 -k5,5r -s "$work"/rows.*; } >"$csv"
 if [ "$report" -eq 1 ]; then
+  # The ten worst runs of ours, rendered beside QECD (bench/renders/worst/).
+  python3 "$top/bench/render_worst.py" "$csv" "$top/bench/renders/worst" "$bench" \
+    "$top/build/bin/vrs_render" "$top/scripts/lib/on_display.sh" 10
   python3 "$top/bench/quality_report.py" "$csv" "$top/bench/QUALITY.md" "$baseline"
   echo "wrote $csv and bench/QUALITY.md" >&2
 else

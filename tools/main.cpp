@@ -1,5 +1,6 @@
 // vrsimplify: simplify a mesh file with the core library.
 //   vrsimplify INPUT OUTPUT [target] [options]   (see usage())
+#include <cctype>
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -44,7 +45,13 @@ const char* kUsage =
     "                                  popped (default) or at once (the paper's way, slower)\n"
     "  --threads N                     threads to plan removals on (default 0: all hardware\n"
     "                                  threads); the output is the same for every N\n"
-    "  --simplify-boundary             also remove boundary vertices (default: kept)\n"
+    "  --simplify-boundary             also remove boundary vertices (default: kept, unless\n"
+    "                                  the kept border alone would take more than a quarter\n"
+    "                                  of the faces asked for)\n"
+    "  --keep-boundary                 keep every boundary vertex whatever the target\n"
+    "  --max-jump X                    stop short of a count target rather than take a\n"
+    "                                  removal costing X times the dearest so far (default\n"
+    "                                  10; 0: the target at any cost)\n"
     "  --error-bound                   track and print the certified error bound without\n"
     "                                  limiting it (what --max-error does, minus the limit)\n"
     "  --feature-angle DEG             keep edges whose faces turn more than DEG apart as\n"
@@ -66,11 +73,24 @@ const char* kUsage =
     "  --scheduler ADDRESS             run the tiles as tasks of a Dask cluster (needs the\n"
     "                                  Python package with dask and distributed; --work-dir\n"
     "                                  must be a path every worker can reach)\n"
-    "  --ascii                         write ascii PLY (default binary)\n";
+    "  --ascii                         write ascii PLY (default binary)\n"
+    "  --version                       print the version\n"
+    "Options take their value as the next argument or after '=' (--ratio=0.1).\n";
 
+// One line: what was wrong, and where the rest is (the whole help buries the message).
 int usage_error(const std::string& msg) {
-  std::fprintf(stderr, "vrsimplify: %s\n%s", msg.c_str(), kUsage);
+  std::fprintf(stderr, "vrsimplify: %s (see vrsimplify --help)\n", msg.c_str());
   return 2;
+}
+
+// The formats the writer knows, judged before any work: a typo costs no run.
+bool writable(const std::string& path) {
+  const size_t dot = path.rfind('.');
+  if (dot == std::string::npos) return false;
+  std::string ext = path.substr(dot + 1);
+  for (char& c : ext)
+    c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return ext == "ply" || ext == "off" || ext == "obj" || ext == "stl";
 }
 
 bool parse_double(const char* s, double& out) {
@@ -87,7 +107,8 @@ bool parse_count(const char* s, size_t& out) {
   return *end == '\0';
 }
 
-void print_json(const vrs::Report& r, double seconds_simplify, double seconds_total, double diag) {
+void print_json(const vrs::Report& r, double seconds_simplify, double seconds_total, double diag,
+                bool bounded) {
   std::printf("{\"ok\":%s,\"input_vertices\":%zu,\"input_faces\":%zu,\"output_vertices\":%zu,"
               "\"output_faces\":%zu,\"removed\":%zu,\"seconds_simplify\":%.6f,"
               "\"seconds_total\":%.6f,\"rejected\":{",
@@ -101,14 +122,18 @@ void print_json(const vrs::Report& r, double seconds_simplify, double seconds_to
               "\"constrained_edges\":%zu,\"input_issues\":{\"degenerate_faces\":%zu,"
               "\"nonfinite_vertices\":%zu,\"unreferenced_vertices\":%zu,"
               "\"reoriented_faces\":%zu},"
-              "\"relaxed_removals\":%zu,\"stop_detail\":\"%s\",\"error_bound\":%.9g,"
-              "\"error_bound_percent\":%.9g}\n",
+              "\"relaxed_removals\":%zu,\"boundary_simplified\":%s,\"stop_detail\":\"%s\"",
               r.rejected_total(), vrs::stop_reason_name(r.stop),
               r.target_reached ? "true" : "false", r.max_removed_factor, r.kept_boundary,
               r.kept_nonmanifold, r.kept_locked, r.kept_high_valence, r.kept_constrained,
               r.constrained_edges, r.dropped_degenerate_faces, r.nonfinite_vertices,
               r.unreferenced_vertices, r.reoriented_faces, r.relaxed_removals,
-              r.stop_detail.c_str(), r.error_bound, diag > 0 ? 100.0 * r.error_bound / diag : 0.0);
+              r.boundary_simplified ? "true" : "false", r.stop_detail.c_str());
+  // A bound that was not tracked is absent, never 0 (which would read "no error at all").
+  if (bounded)
+    std::printf(",\"error_bound\":%.9g,\"error_bound_percent\":%.9g", r.error_bound,
+                diag > 0 ? 100.0 * r.error_bound / diag : 0.0);
+  std::printf("}\n");
 }
 
 void print_text(const vrs::Report& r, double seconds_simplify, double seconds_total, double diag,
@@ -131,9 +156,12 @@ void print_text(const vrs::Report& r, double seconds_simplify, double seconds_to
     std::printf("bound:   %.6g (%.6g %% of the diagonal): no point of the output is farther "
                 "from the input, nor of the input from the output (certified)\n",
                 r.error_bound, diag > 0 ? 100.0 * r.error_bound / diag : 0.0);
+  if (r.boundary_simplified)
+    std::printf("border:  simplified too: kept, it alone would take more than a quarter of the "
+                "faces asked for (--keep-boundary keeps it)\n");
   if (r.relaxed_removals)
-    std::printf("relaxed: %zu removals after the input-normal veto was lifted to reach the "
-                "target\n",
+    std::printf("relaxed: %zu removals after the input-normal veto was eased or lifted to reach "
+                "the target\n",
                 r.relaxed_removals);
   if (!r.message.empty()) std::printf("note:    %s\n", r.message.c_str());
 }
@@ -154,13 +182,31 @@ int main(int argc, char** argv) {
   vrs_tool::TiledRequest tiled; // --memory / --scheduler
   for (int i = 1; i < argc; ++i) {
     std::string a = argv[i];
+    // --opt=value: the value is what follows the '=', and only an option that takes one may
+    // have it (a flag given "=x" is an error below, as an unknown option).
+    std::string attached;
+    bool has_attached = false;
+    if (a.size() > 2 && a.compare(0, 2, "--") == 0) {
+      const size_t eq = a.find('=');
+      if (eq != std::string::npos) {
+        attached = a.substr(eq + 1);
+        a.resize(eq);
+        has_attached = true;
+      }
+    }
+    bool value_taken = false;
     auto value = [&]() -> const char* {
+      value_taken = true;
+      if (has_attached) return attached.c_str();
       if (i + 1 >= argc) return nullptr;
       return argv[++i];
     };
     const char* v = nullptr;
     if (a == "--help" || a == "-h") {
       std::printf("%s", kUsage);
+      return 0;
+    } else if (a == "--version") {
+      std::printf("vrsimplify %s\n", VRS_VERSION);
       return 0;
     } else if (a == "--json") {
       json = true;
@@ -172,6 +218,11 @@ int main(int argc, char** argv) {
       progress = 0;
     } else if (a == "--simplify-boundary") {
       opt.simplify_boundary = true;
+    } else if (a == "--keep-boundary") {
+      opt.simplify_boundary_when_needed = false;
+    } else if (a == "--max-jump") {
+      if (!(v = value()) || !parse_double(v, opt.max_price_jump) || opt.max_price_jump < 0)
+        return usage_error("--max-jump needs a number >= 0");
     } else if (a == "--error-bound") {
       error_bound = true;
     } else if (a == "--max-error") {
@@ -259,12 +310,17 @@ int main(int argc, char** argv) {
     } else {
       return usage_error("unexpected argument " + a);
     }
+    if (has_attached && !value_taken) return usage_error(a + " takes no value");
   }
   if (in.empty() || out.empty()) return usage_error("INPUT and OUTPUT are required");
   if (targets > 1) return usage_error("give at most one target");
+  if (!writable(out))
+    return usage_error("cannot write " + out + ": the output must end in .ply, .off, .obj or .stl");
   if (max_error > 0 && targets == 0) { // the bound alone: as far as it allows
     opt.target.kind = vrs::TargetKind::Faces;
     opt.target.faces = 0;
+    // No count to reach: the last resort, which lifts vetoes to reach one, has nothing to do.
+    opt.relax_to_reach_target = false;
   }
 
   if (tiled.memory || !tiled.scheduler.empty()) {
@@ -315,7 +371,7 @@ int main(int argc, char** argv) {
   }
   const double seconds_total = std::chrono::duration<double>(clock::now() - t0).count();
   if (json)
-    print_json(report, seconds_simplify, seconds_total, diag);
+    print_json(report, seconds_simplify, seconds_total, diag, opt.max_error > 0);
   else
     print_text(report, seconds_simplify, seconds_total, diag, opt.max_error > 0);
   return 0;

@@ -22,6 +22,24 @@
 #include "vcg_mesh.h"
 #include <wrap/io_trimesh/io_mask.h>
 
+namespace {
+
+// Three coordinates as text, by strtof's grammar: "nan" and "inf" read as the PLY reader reads
+// them (the core keeps such vertices and says so), not as a malformed file; istream's >> for
+// float refuses them.
+bool read_xyz(std::istream& s, float& x, float& y, float& z) {
+  for (float* c : {&x, &y, &z}) {
+    std::string token;
+    if (!(s >> token)) return false;
+    char* end = nullptr;
+    *c = std::strtof(token.c_str(), &end);
+    if (end == token.c_str() || *end != '\0') return false;
+  }
+  return true;
+}
+
+} // namespace
+
 namespace vrs_tool {
 
 namespace {
@@ -91,7 +109,7 @@ std::string read_obj(const std::string& path, VcgDocument& doc) {
     s >> tag;
     if (tag == "v") {
       float x, y, z, r, g, b;
-      if (!(s >> x >> y >> z)) return "bad vertex on line " + std::to_string(line_no);
+      if (!read_xyz(s, x, y, z)) return "bad vertex on line " + std::to_string(line_no);
       pos.emplace_back(x, y, z);
       if (s >> r >> g >> b) color.emplace_back(vcg::Color4b(r * 255, g * 255, b * 255, 255));
     } else if (tag == "vt") {
@@ -177,7 +195,7 @@ std::string read_stl(const std::string& path, VcgDocument& doc) {
     while (s >> word) {
       if (word != "vertex") continue;
       float x, y, z;
-      if (!(s >> x >> y >> z)) return "bad vertex in ascii STL";
+      if (!read_xyz(s, x, y, z)) return "bad vertex in ascii STL";
       tris.push_back(int(pos.size()));
       pos.emplace_back(x, y, z);
     }
@@ -227,7 +245,7 @@ std::string read_off(const std::string& path, VcgDocument& doc) {
   for (long v = 0; v < nv; ++v, ++line) {
     std::istringstream s(lines[line]);
     float x, y, z, skip;
-    if (!(s >> x >> y >> z)) return "bad vertex " + std::to_string(v);
+    if (!read_xyz(s, x, y, z)) return "bad vertex " + std::to_string(v);
     pos.emplace_back(x, y, z);
     if (normals) s >> skip >> skip >> skip;
     if (texcoords) s >> skip >> skip;

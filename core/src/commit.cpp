@@ -42,6 +42,7 @@ void Simplifier::rewrite(Planned& p) {
     }
   }
   topo_.clear(v);
+  if (carried_.active()) carried_.hand_over(v, ring, patch, eval_);
 }
 
 } // namespace vrs

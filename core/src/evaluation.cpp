@@ -1,5 +1,6 @@
 #include "evaluation.h"
 
+#include <algorithm>
 #include <limits>
 
 namespace vrs {
@@ -17,21 +18,38 @@ std::vector<float> vertex_normals(const std::vector<float>& pos,
   // faces of a mesh that also holds one huge coordinate (found by the fuzzer: a face flipped
   // against a vertex whose normal had vanished).
   auto at = [&](uint32_t v) { return Vec3{pos[3 * v], pos[3 * v + 1], pos[3 * v + 2]}; };
-  std::vector<float> n(pos.size(), 0.0f);
+  const size_t count = pos.size() / 3;
+  std::vector<float> n(4 * count, 0.0f);
+  auto face_normal = [&](size_t i) {
+    const Vec3 a = at(tris[i]);
+    return normalized(cross(at(tris[i + 1]) - a, at(tris[i + 2]) - a));
+  };
   for (size_t i = 0; i + 2 < tris.size(); i += 3) {
-    Vec3 a = at(tris[i]), u = normalized(cross(at(tris[i + 1]) - a, at(tris[i + 2]) - a));
+    const Vec3 u = face_normal(i);
     for (int k = 0; k < 3; ++k) {
-      float* s = &n[3 * size_t(tris[i + k])];
+      float* s = &n[4 * size_t(tris[i + k])];
       s[0] += float(u.x), s[1] += float(u.y), s[2] += float(u.z);
     }
   }
-  for (size_t v = 0; v < n.size(); v += 3) {
+  std::vector<float> least(count, 1.0f); // per vertex: least cosine between normal and a face
+  for (size_t v = 0; v < count; ++v) {
     // Faces that cancel out (a fin, a sheet folded onto itself) leave a rounding residue whose
     // direction means nothing: no normal there (found by the fuzzer).
-    Vec3 sum{n[v], n[v + 1], n[v + 2]};
+    float* s = &n[4 * v];
+    Vec3 sum{s[0], s[1], s[2]};
     Vec3 u = length(sum) > kMinNormalSum ? normalized(sum) : Vec3{};
-    n[v] = float(u.x), n[v + 1] = float(u.y), n[v + 2] = float(u.z);
+    s[0] = float(u.x), s[1] = float(u.y), s[2] = float(u.z);
   }
+  for (size_t i = 0; i + 2 < tris.size(); i += 3) {
+    const Vec3 u = face_normal(i);
+    for (int k = 0; k < 3; ++k) {
+      const float* s = &n[4 * size_t(tris[i + k])];
+      float& l = least[tris[i + k]];
+      l = std::min(l, float(dot(u, Vec3{s[0], s[1], s[2]})));
+    }
+  }
+  for (size_t v = 0; v < count; ++v) // the sine of the cone's half-angle, 1 past 90 degrees
+    n[4 * v + 3] = least[v] > 0 ? std::sqrt(std::max(0.0f, 1 - least[v] * least[v])) : 1.0f;
   return n;
 }
 

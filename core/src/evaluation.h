@@ -52,8 +52,10 @@ class Evaluator {
 // Distance from p to the line through a and b (to a when a == b).
 double distance_to_line(Vec3 p, Vec3 a, Vec3 b);
 
-// Unit vertex normals of the input surface (sum of the faces' unit normals), 3 floats a
-// vertex; zero where none, or where the sum is shorter than kMinNormalSum (faces cancelling).
+// The input surface's normal cone at each vertex, 4 floats a vertex: the unit normal (sum of
+// the faces' unit normals; zero where none, or where the sum is shorter than kMinNormalSum:
+// faces cancelling) and the sine of the largest angle between it and one of the vertex's faces
+// (1 from 90 degrees up): 0 on a flat part, about 0.7 on a box's edge, 1 on a thin wall's rim.
 constexpr double kMinNormalSum = 1e-3;
 std::vector<float> vertex_normals(const std::vector<float>& positions,
                                   const std::vector<uint32_t>& triangles);

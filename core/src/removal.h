@@ -4,6 +4,7 @@
 #pragma once
 
 #include "candidates.h"
+#include "carried_points.h"
 #include "evaluation.h"
 #include "topology.h"
 #include "triangulation.h"
@@ -61,6 +62,8 @@ class Planner {
   // Tracks the error bound (vetoes.h, veto_bound): each face slot's certified bound, kept by
   // the driver. nullptr: not tracked.
   void set_face_bounds(const float* face_bound) { face_bound_ = face_bound; }
+  // Judges fold-overs against the input (CarriedPoints::folds_input) too. nullptr: not.
+  void set_carried(const CarriedPoints* carried) { carried_ = carried; }
 
  private:
   const Evaluator* eval_;
@@ -71,6 +74,7 @@ class Planner {
   Pricer price_;
   bool fans_, on_plane_;
   const float* face_bound_ = nullptr;
+  const CarriedPoints* carried_ = nullptr;
 };
 
 } // namespace vrs

@@ -48,7 +48,7 @@ template <class Queue> void Simplifier::plan_batch(size_t count, const Queue& qu
     if (!p.usable) return;
     for (int i = 0; i < p.ring.verts; ++i) {
       topo_.prefetch_list(p.ring.v[i]);
-      prefetch(&normals_[3 * size_t(p.ring.v[i])]);
+      prefetch(&normals_[4 * size_t(p.ring.v[i])]);
     }
     double chord = 0, cost = 0;
     Evaluation e = evaluate_plane(p.v, p.ring, &chord);

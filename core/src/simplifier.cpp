@@ -67,7 +67,7 @@ template <class Queue> void Simplifier::run(Queue& queue) {
       rep_.stop = StopReason::TargetReached;
       break;
     }
-    if (queue.empty() && counts && opt_.relax_to_reach_target && relax(queue)) continue;
+    if (queue.empty() && counts && opt_.relax_to_reach_target && relax(queue, false)) continue;
     if (queue.empty()) {
       // With a finite error bound that refused removals, the bound is what stopped the run.
       const bool bounded = std::isfinite(opt_.max_error) && rep_.rejected[RejectBound] > 0;
@@ -123,6 +123,13 @@ template <class Queue> void Simplifier::run(Queue& queue) {
           continue;
         }
       }
+      if (counts && jumps(p.stale ? p.priority : double(factor_[v]))) {
+        // The cheapest removal left is far dearer than any so far: not at any cost (below).
+        jump_price_ = p.stale ? p.priority : double(factor_[v]);
+        jump_from_ = rep_.max_removed_factor;
+        queue.push(v, jump_price_);
+        break;
+      }
       taken_.mark(flags_, v, p.ring);
       account(p, queue);
       committed_.push_back(uint32_t(b));
@@ -134,6 +141,20 @@ template <class Queue> void Simplifier::run(Queue& queue) {
         topo_.add_face(batch_[b].overflow[i].first, batch_[b].overflow[i].second);
     committed_.clear();
     reprice(queue);
+    // Most of what is left refused only by a corner's input normal (threads, thin walls,
+    // tunnels): take those, one corner facing away allowed, before the cheapest rest drops a
+    // part (CAD at 10 %: p90 of the mean-error ratio to QECD 5.7 -> 4.1; 50 % unchanged).
+    if (counts && relax_steps_ == 0 && opt_.relax_to_reach_target && flip_refused_ > queue.size() &&
+        relax(queue, false))
+      continue;
+    if (jump_price_ > 0) {
+      if (opt_.relax_to_reach_target && relax(queue, true)) {
+        jump_price_ = 0;
+        continue;
+      }
+      rep_.stop = StopReason::NoCandidates;
+      break;
+    }
   }
   if (opt_.progress && rep_.stop != StopReason::Cancelled) opt_.progress(1.0f);
 }

@@ -10,6 +10,7 @@
 #include <string>
 #include <vector>
 
+#include "carried_points.h"
 #include "constraints.h"
 #include "evaluation.h"
 #include "removal.h"
@@ -34,7 +35,10 @@ class Simplifier {
   }
   Simplifier(const Simplifier&) = delete;
 
-  void prepare();                                // setup.cpp
+  void prepare(); // setup.cpp
+  // Options::simplify_boundary_when_needed: whether the kept border would take more than a
+  // quarter of the count target (setup.cpp).
+  bool border_needs_simplifying() const;
   template <class Queue> void run(Queue& queue); // simplifier.cpp
   void compact();                                // output.cpp
   // Why the remaining vertices stay, when the target was not met (Report::stop_detail).
@@ -45,7 +49,7 @@ class Simplifier {
   // triangle off the outline.
   bool removable(VertexKind k) const {
     return k == VertexKind::Interior ||
-           (opt_.simplify_boundary &&
+           (simplify_boundary_ &&
             (k == VertexKind::Boundary || (k == VertexKind::Corner && last_resort_)));
   }
   bool target_met() const;
@@ -92,10 +96,14 @@ class Simplifier {
   template <class Queue> void reprice(Queue& queue);
 
   // --- last_resort.cpp
-  // The last resort when a count target is not met and nothing is left to remove: lifts the
-  // input-normal veto and the outline-corner rule (with boundary simplification on) and
-  // queues every removable vertex again. False if it was done already.
-  template <class Queue> bool relax(Queue& queue);
+  // When a count target is not met and nothing is left to remove, or the next removal would
+  // be a price jump: first lets one corner of a new triangle face away from the input's
+  // normal; then, at the next exhaustion, the last resort lifts the input-normal veto to one
+  // corner and the outline-corner rule (with boundary simplification on). Queues every
+  // removable vertex again. False when nothing is left to relax.
+  template <class Queue> bool relax(Queue& queue, bool after_jump);
+  // Prices every removable vertex again and queues it (in input order, as run() does).
+  template <class Queue> void requeue(Queue& queue);
 
   Mesh& mesh_;
   const Options& opt_;
@@ -103,6 +111,17 @@ class Simplifier {
   Evaluator eval_;
   RemovalLimits limits_;
   bool last_resort_ = false; // see relax()
+  int relax_steps_ = 0;      // relax() calls so far: 1 lets one corner disagree, 2 the rest
+  // Options::max_price_jump: the least price a jump is measured from (1e-3 of the diagonal),
+  // and, once the run stopped at one, the price and the dearest removal before it.
+  double jump_floor_ = 0, jump_price_ = 0, jump_from_ = 0;
+  // Whether removing v at `price` would be such a jump (with a count target).
+  // Not before 16 removals: a few removals are no history to jump from.
+  bool jumps(double price) const {
+    return opt_.max_price_jump > 0 && opt_.priority == Priority::LocalError && rep_.removed >= 16 &&
+           price > opt_.max_price_jump * std::max(rep_.max_removed_factor, jump_floor_);
+  }
+  bool simplify_boundary_ = opt_.simplify_boundary; // or on when the kept border needs it
   // Queued neighbours of a removal are re-priced when popped. The paper's factor is the plane
   // alone, cheap to make at once: lazy only pays where the price is a plan.
   const bool lazy_ = opt_.lazy_reevaluation && opt_.priority == Priority::LocalError;
@@ -121,12 +140,15 @@ class Simplifier {
   std::vector<float> normals_;  // unit vertex normals of the input surface, 3 a vertex
   std::vector<uint8_t> flags_;  // vertex_flags.h
   void set_refused(uint32_t v, Reject why) {
+    flip_refused_ += size_t(why == RejectFlip) - size_t(refused(v) == RejectFlip);
     flags_[v] = uint8_t((flags_[v] & ~kRefusedMask) | (why << kRefusedShift));
   }
+  size_t flip_refused_ = 0; // vertices whose last plan a corner's input normal refused
   Reject refused(uint32_t v) const { return Reject((flags_[v] & kRefusedMask) >> kRefusedShift); }
   std::vector<uint32_t> face_source_;   // per face slot: its input face, or kRemoved once rewritten
   std::vector<uint32_t> corner_source_; // per face slot corner: the input corner it carries
   std::vector<float> face_bound_;       // per face slot: its certified error bound (max_error)
+  CarriedPoints carried_;               // removed vertices, by the face standing for them
   Constraints constraints_;
   SpatialOrder order_;
   size_t faces_ = 0, vertices_ = 0, target_faces_ = 0, target_vertices_ = 0;

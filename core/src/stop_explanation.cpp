@@ -1,5 +1,8 @@
 #include "stop_explanation.h"
 
+#include <algorithm>
+#include <cstdio>
+
 #include "simplifier.h"
 
 namespace vrs {
@@ -35,6 +38,17 @@ std::string explain_remaining(const Remaining& r, bool simplify_boundary, bool l
 }
 
 std::string Simplifier::explain_stop() const {
+  if (jump_price_ > 0) {
+    char why[400];
+    std::snprintf(why, sizeof why,
+                  "stopped short of the target: the cheapest removal left costs %.3g, %.0f times "
+                  "the dearest made so far (%.3g); the surface would change abruptly (a part "
+                  "dropped, a tunnel pressed flat, a thin wall crossed) rather than lose detail "
+                  "(max_price_jump %g; 0 reaches the target at any cost)",
+                  jump_price_, jump_price_ / std::max(jump_from_, jump_floor_), jump_from_,
+                  opt_.max_price_jump);
+    return why;
+  }
   Remaining r;
   Ring ring;
   std::array<int, 2> seam;
@@ -58,7 +72,7 @@ std::string Simplifier::explain_stop() const {
     else
       ++r.untried;
   }
-  return explain_remaining(r, opt_.simplify_boundary, last_resort_);
+  return explain_remaining(r, simplify_boundary_, last_resort_);
 }
 
 } // namespace vrs

@@ -67,7 +67,7 @@ Reject veto_triangle(const Ring& ring, const Patch& patch, std::array<uint8_t, 3
   if (plane_angle && dot(face, patch.normal) < limits.min_normal_cos) return RejectFlip;
   int agreeing = 0;
   for (int e = 0; e < 3; ++e) {
-    const float* sn = surface_normals + 3 * size_t(ring.v[tri[e]]);
+    const float* sn = surface_normals + 4 * size_t(ring.v[tri[e]]);
     agreeing += dot(face, Vec3{sn[0], sn[1], sn[2]}) > 0;
   }
   if (agreeing < limits.agreeing_corners) return RejectFlip;

@@ -42,8 +42,10 @@ void declare_parameters(const MeshModel& m, RichParameterList& par) {
                        "intervals follow the factor order more closely; Auto stop keeps the "
                        "last one."));
   par.addParam(RichBool("PreserveBoundary", true, "Preserve Boundary of the mesh",
-                        "Keep every boundary vertex (the paper's rule). Off: boundary vertices "
-                        "may go too, except outline corners turning more than 30 degrees."));
+                        "Keep every boundary vertex (the paper's rule), unless the kept boundary "
+                        "alone would take more than a quarter of the faces asked for: then it is "
+                        "simplified too, and the log says so. Off: boundary vertices may go too, "
+                        "except outline corners turning more than 30 degrees."));
   par.addParam(RichBool("Selected", m.cm.sfn > 0, "Simplify only selected faces",
                         "Only vertices whose faces are all selected may be removed; the target "
                         "counts the whole mesh, as in Quadric Edge Collapse Decimation."));

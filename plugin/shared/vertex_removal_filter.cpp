@@ -60,7 +60,7 @@ struct Totals {
   size_t kept_constrained = 0, constrained_edges = 0;
   double max_priority = 0, seconds = 0;
   double error_bound = 0, diagonal = 0; // summed over the levels: each is bounded from the last
-  bool target_reached = true;
+  bool target_reached = true, boundary_simplified = false;
   vrs::StopReason stop = vrs::StopReason::TargetReached; // of the last level
 };
 
@@ -142,6 +142,7 @@ Outcome Application::run(const RichParameterList& par) {
   r["levels"] = levels;
   r["stop_reason"] = int(totals_.stop);
   r["target_reached"] = totals_.target_reached;
+  r["boundary_simplified"] = totals_.boundary_simplified;
   size_t rejected = 0;
   for (int i = 0; i < vrs::RejectCount; ++i) {
     r[std::string("rejected_") + vrs::reject_name(vrs::Reject(i))] = count(totals_.rejected[i]);
@@ -156,10 +157,12 @@ Outcome Application::run(const RichParameterList& par) {
   r["constrained_edges"] = count(totals_.constrained_edges);
   r["max_priority"] = totals_.max_priority;
   // With MaxError: the certified bound of the last level against the input (mesh units, and
-  // in % of the input's diagonal).
-  r["error_bound"] = totals_.error_bound;
-  r["error_bound_percent"] =
-      totals_.diagonal > 0 ? 100.0 * totals_.error_bound / totals_.diagonal : 0.0;
+  // in % of the input's diagonal). Without, no key: a bound not tracked is never "0".
+  if (s.max_error > 0) {
+    r["error_bound"] = totals_.error_bound;
+    r["error_bound_percent"] =
+        totals_.diagonal > 0 ? 100.0 * totals_.error_bound / totals_.diagonal : 0.0;
+  }
   r["seconds"] = totals_.seconds;
   out.ok = true;
   return out;
@@ -222,6 +225,7 @@ QString Application::simplify_layer(MeshModel& m, const FilterSettings& s, int l
   totals_.seconds += seconds;
   totals_.target_reached = totals_.target_reached && r.target_reached;
   totals_.stop = r.stop;
+  totals_.boundary_simplified = totals_.boundary_simplified || r.boundary_simplified;
 
   QString level_text =
       s.lod_levels > 1 ? QString(" (level %1, layer %2)").arg(level).arg(m.label()) : "";
@@ -262,6 +266,9 @@ QString Application::simplify_layer(MeshModel& m, const FilterSettings& s, int l
             .arg(totals_.error_bound)
             .arg(totals_.diagonal > 0 ? 100.0 * totals_.error_bound / totals_.diagonal : 0.0)
             .arg(level > 1 ? " (the levels' bounds added up)" : ""));
+  if (r.boundary_simplified)
+    log("Boundary simplified too: kept, it alone would have taken more than a quarter of the "
+        "faces asked for");
   if (r.relaxed_removals)
     log(QString("%1 removals needed the input-normal veto lifted to reach the target")
             .arg(r.relaxed_removals));

@@ -94,7 +94,7 @@ std::vector<int64_t> signed_indices(const std::vector<uint32_t>& v) {
   return out;
 }
 
-nb::dict report_dict(const vrs::Report& r) {
+nb::dict report_dict(const vrs::Report& r, bool bounded) {
   nb::dict d, rejected, kept, input;
   d["stop_reason"] = vrs::stop_reason_name(r.stop);
   d["target_reached"] = r.target_reached;
@@ -121,18 +121,21 @@ nb::dict report_dict(const vrs::Report& r) {
   input["reoriented_faces"] = r.reoriented_faces;
   d["input_issues"] = input;
   d["relaxed_removals"] = r.relaxed_removals;
+  d["boundary_simplified"] = r.boundary_simplified;
   d["max_removed_factor"] = r.max_removed_factor;
-  d["error_bound"] = r.error_bound;
+  // Not tracked: None, never 0.0 (which would read "no error at all").
+  d["error_bound"] = bounded ? nb::object(nb::float_(r.error_bound)) : nb::none();
   return d;
 }
 
 struct Target {
-  std::string kind; // "ratio", "faces", "vertices"
+  std::string kind; // "ratio", "faces", "vertices", "bound" (max_error alone)
   double value;
 };
 
 vrs::Options make_options(const Target& target, double max_error, const std::string& mode,
-                          int threads, bool simplify_boundary, double feature_angle) {
+                          int threads, bool simplify_boundary, bool keep_boundary, double max_jump,
+                          double feature_angle) {
   vrs::Options opt;
   if (target.kind == "ratio") {
     opt.target.kind = vrs::TargetKind::Ratio;
@@ -143,6 +146,11 @@ vrs::Options make_options(const Target& target, double max_error, const std::str
     const bool faces = target.kind == "faces";
     opt.target.kind = faces ? vrs::TargetKind::Faces : vrs::TargetKind::Vertices;
     (faces ? opt.target.faces : opt.target.vertices) = size_t(target.value);
+  } else if (target.kind == "bound") { // max_error alone: as far as the bound allows
+    opt.target.kind = vrs::TargetKind::Faces;
+    opt.target.faces = 0;
+    // No count to reach: the last resort, which lifts vetoes to reach one, has nothing to do.
+    opt.relax_to_reach_target = false;
   } else {
     throw nb::value_error(("unknown target " + target.kind).c_str());
   }
@@ -151,6 +159,9 @@ vrs::Options make_options(const Target& target, double max_error, const std::str
   opt.max_error = max_error;
   opt.threads = threads;
   opt.simplify_boundary = simplify_boundary;
+  opt.simplify_boundary_when_needed = !keep_boundary;
+  if (!(max_jump >= 0)) throw nb::value_error("max_jump must be >= 0 (0: the target at any cost)");
+  opt.max_price_jump = max_jump;
   opt.feature_angle_deg = feature_angle;
   opt.corner_sources = true;
   return opt;
@@ -158,10 +169,11 @@ vrs::Options make_options(const Target& target, double max_error, const std::str
 
 nb::tuple simplify(AnyArray vertices, AnyArray faces, const std::string& target_kind,
                    double target_value, double max_error, const std::string& mode, int threads,
-                   bool simplify_boundary, double feature_angle, std::optional<AnyArray> seams,
+                   bool simplify_boundary, bool keep_boundary, double max_jump,
+                   double feature_angle, std::optional<AnyArray> seams,
                    std::optional<AnyArray> locked, nb::object progress) {
   vrs::Options opt = make_options({target_kind, target_value}, max_error, mode, threads,
-                                  simplify_boundary, feature_angle);
+                                  simplify_boundary, keep_boundary, max_jump, feature_angle);
   vrs::Mesh mesh;
   mesh.positions = read_positions(vertices);
   const size_t n = mesh.vertex_count();
@@ -194,8 +206,12 @@ nb::tuple simplify(AnyArray vertices, AnyArray faces, const std::string& target_
     }
     if (progress.is_none()) return true;
     try {
+      // Any object Python calls true goes on (np.True_, 1, a non-empty string): as `if`.
       nb::object go_on = progress(fraction);
-      return go_on.is_none() || nb::cast<bool>(go_on);
+      if (go_on.is_none()) return true;
+      const int truth = PyObject_IsTrue(go_on.ptr());
+      if (truth < 0) throw nb::python_error();
+      return truth != 0;
     } catch (nb::python_error& e) {
       e.restore();
       python_error = true;
@@ -215,10 +231,11 @@ nb::tuple simplify(AnyArray vertices, AnyArray faces, const std::string& target_
   for (size_t v = 0; v < report.remap.size(); ++v)
     if (report.remap[v] != vrs::kRemoved) vertex_map[report.remap[v]] = int64_t(v);
   const size_t f = mesh.face_count(), m = vertex_map.size();
-  return nb::make_tuple(
-      to_numpy(std::move(mesh.triangles), {f, 3}), to_numpy(std::move(vertex_map), {m}),
-      to_numpy(signed_indices(report.face_source), {f}),
-      to_numpy(signed_indices(report.corner_source), {f, 3}), report_dict(report));
+  return nb::make_tuple(to_numpy(std::move(mesh.triangles), {f, 3}),
+                        to_numpy(std::move(vertex_map), {m}),
+                        to_numpy(signed_indices(report.face_source), {f}),
+                        to_numpy(signed_indices(report.corner_source), {f, 3}),
+                        report_dict(report, opt.max_error > 0));
 }
 
 } // namespace
@@ -230,8 +247,9 @@ NB_MODULE(_core, m) {
   m.attr("__version__") = VRS_VERSION;
   m.def("simplify", &simplify, nb::arg("vertices"), nb::arg("faces"), nb::arg("target_kind"),
         nb::arg("target_value"), nb::arg("max_error"), nb::arg("mode"), nb::arg("threads"),
-        nb::arg("simplify_boundary"), nb::arg("feature_angle"), nb::arg("seams").none(),
-        nb::arg("locked").none(), nb::arg("progress").none());
+        nb::arg("simplify_boundary"), nb::arg("keep_boundary"), nb::arg("max_jump"),
+        nb::arg("feature_angle"), nb::arg("seams").none(), nb::arg("locked").none(),
+        nb::arg("progress").none());
   // The MeshLab filter hands pymeshlab its stop reason as a number (strings do not pass).
   m.def("stop_reason_name", [](int code) -> std::string {
     if (code < 0 || code > int(vrs::StopReason::ErrorBound))

@@ -136,6 +136,46 @@ def test_progress_reports_and_cancels(fandisk):
         vrsimplify.simplify(v, f, ratio=0.1, progress=boom)
 
 
+@pytest.mark.parametrize("go_on", [np.True_, 1, "yes", np.float64(1.0), [0]])
+def test_progress_takes_any_truthy_value(fandisk, go_on):
+    # As Python's own `if`: numpy booleans, numbers and containers go on; false ones stop.
+    v, f = fandisk
+    r = vrsimplify.simplify(v, f, ratio=0.1, progress=lambda x: go_on)
+    assert r.report["target_reached"]
+    stop = type(go_on)() if not isinstance(go_on, np.generic) else go_on.dtype.type(0)
+    r = vrsimplify.simplify(v, f, ratio=0.1, progress=lambda x: stop)
+    assert r.report["stop_reason"] == "cancelled"
+    r = vrsimplify.simplify(v, f, ratio=0.1, progress=lambda x: np.float64(x) < 0.5)
+    assert r.report["stop_reason"] == "cancelled"
+
+
+def test_error_bound_is_none_unless_tracked(sphere):
+    v, f = sphere
+    assert vrsimplify.simplify(v, f, ratio=0.5).report["error_bound"] is None
+    r = vrsimplify.simplify(v, f, max_error="1%")
+    assert r.report["error_bound"] > 0 and r.report["relaxed_removals"] == 0
+
+
+def test_border_simplified_only_when_the_target_needs_it():
+    # A square grid with its border: at 5 % the kept border (124 vertices) would take more
+    # than a quarter of the faces asked for.
+    n = 32
+    x, y = np.meshgrid(np.arange(n + 1.0), np.arange(n + 1.0))
+    v = np.stack([x.ravel(), y.ravel(), 0.1 * np.sin(x.ravel()) * np.cos(y.ravel())], axis=1)
+    i = np.arange(n * (n + 1)).reshape(n, n + 1)[:, :n].ravel()
+    f = np.concatenate([np.stack([i, i + 1, i + n + 2], 1), np.stack([i, i + n + 2, i + n + 1], 1)])
+    border = np.unique(np.concatenate([np.arange(n + 1), np.arange(n * (n + 1), (n + 1) ** 2),
+                                       np.arange(0, (n + 1) ** 2, n + 1), np.arange(n, (n + 1) ** 2, n + 1)]))
+    r = vrsimplify.simplify(v, f, ratio=0.05)
+    assert r.report["boundary_simplified"] and len(r.faces) <= round(0.05 * len(f))
+    assert not set(border) <= set(r.vertex_map.tolist())
+    kept = vrsimplify.simplify(v, f, ratio=0.05, keep_boundary=True)
+    assert not kept.report["boundary_simplified"] and set(border) <= set(kept.vertex_map.tolist())
+    assert not vrsimplify.simplify(v, f, ratio=0.5).report["boundary_simplified"]
+    with pytest.raises(ValueError, match="max_jump"):
+        vrsimplify.simplify(v, f, ratio=0.5, max_jump=-1)
+
+
 def test_ctrl_c_raises_keyboard_interrupt_and_leaves_the_input(fandisk):
     v, f = fandisk[0].copy(), fandisk[1].copy()
     def interrupt(_):

@@ -54,7 +54,7 @@ def _target(ratio, faces, vertices, max_error) -> tuple[str, float]:
         except (TypeError, ValueError):
             raise ValueError(f"{kind} must be a number, got {value!r}") from None
     # The bound alone simplifies as far as it allows; with nothing at all, half the faces.
-    return ("faces", 0.0) if max_error is not None else ("ratio", 0.5)
+    return ("bound", 0.0) if max_error is not None else ("ratio", 0.5)
 
 
 def _max_error(max_error, vertices: np.ndarray) -> float:
@@ -78,7 +78,8 @@ def _max_error(max_error, vertices: np.ndarray) -> float:
 def simplify(mesh_vertices, mesh_faces, /, *, ratio: Optional[float] = None,
              faces: Optional[int] = None, vertices: Optional[int] = None,
              max_error: Union[float, str, None] = None, mode: str = "surface", threads: int = 0,
-             simplify_boundary: bool = False, feature_angle: float = 0.0, seams=None, locked=None,
+             simplify_boundary: bool = False, keep_boundary: bool = False, max_jump: float = 10.0,
+             feature_angle: float = 0.0, seams=None, locked=None,
              progress: Optional[Callable[[float], Optional[bool]]] = None) -> Result:
     """Simplifies a triangle mesh by removing vertices; the input arrays are left untouched.
 
@@ -90,7 +91,11 @@ def simplify(mesh_vertices, mesh_faces, /, *, ratio: Optional[float] = None,
     without limiting (``report["error_bound"]``).
     mode: "surface" (3D), "terrain" (2.5D, XY plane) or "planar" (2D).
     threads: 0 = every hardware thread; the output is the same for any number.
-    simplify_boundary: also remove border vertices (kept by default).
+    simplify_boundary: also remove border vertices (kept by default, unless the kept border
+    alone would take more than a quarter of the faces asked for: report["boundary_simplified"]).
+    keep_boundary: keep every border vertex whatever the target (the paper's rule).
+    max_jump: stop short of a count target rather than take a removal costing this many times
+    the dearest one so far (a part dropped, a tunnel pressed flat); 0: the target at any cost.
     feature_angle: keep edges whose faces turn more than this many degrees apart (0: off).
     seams: (s, 2) vertex pairs kept as polylines (texture seams, material borders).
     locked: boolean mask, one entry per vertex: those vertices stay.
@@ -112,7 +117,8 @@ def simplify(mesh_vertices, mesh_faces, /, *, ratio: Optional[float] = None,
             raise ValueError(f"locked must be a boolean mask, got dtype {locked.dtype}")
     out_faces, vertex_map, face_source, corner_source, report = _core.simplify(
         v, f, kind, value, _max_error(max_error, v), str(mode), int(threads),
-        bool(simplify_boundary), float(feature_angle), seams, locked, progress)
+        bool(simplify_boundary), bool(keep_boundary), float(max_jump), float(feature_angle), seams,
+        locked, progress)
     return Result(vertices=v[vertex_map], faces=out_faces.astype(f.dtype, copy=False),
                   vertex_map=vertex_map, face_source=face_source, corner_source=corner_source,
                   report=report)

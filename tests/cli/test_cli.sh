@@ -126,7 +126,8 @@ expect_exit 2 "--max-error needs" "$bin" "$in" "$out/never.ply" --max-error %
 
 # --max-error: alone it simplifies as far as the bound allows and prints the bound it certifies
 # (within the limit); in % of the diagonal (fandisk's is 1.452); with a face target, whichever
-# comes first. ("error_bound" is also a refusal's name: the report's field is the last one.)
+# comes first. ("error_bound" is also a refusal's name (in "rejected"): the report's field, only
+# there when a bound was tracked, is the last one.)
 "$bin" "$in" "$out/bound.ply" --max-error 0.1% --json >"$out/bound.json" 2>"$out/e" &&
   grep -q '"stop_reason":"error_bound"' "$out/bound.json" &&
   awk -v b="$(json_num "$out/bound.json" error_bound_percent)" 'BEGIN { exit !(b > 0 && b <= 0.1) }' &&
@@ -189,6 +190,56 @@ mkdir -p "$out/scratch" && echo mine >"$out/scratch/keep.txt"
   fail "--memory lots: $(cat "$out/err")"
 "$bin" "$in" "$out/x.ply" --faces 100 --memory 1M 2>"$out/err"; [ $? -eq 2 ] && grep -q "take --ratio only" "$out/err" && ok ||
   fail "--faces with tiles: $(cat "$out/err")"
+
+# 9. CLI habits: --version, --opt=value, a one-line usage error, the output's format judged
+#    before any work, no error bound in the report unless one was tracked, no last resort
+#    (and no "relaxed" line) for a bound alone, the border simplified only when the target
+#    needs it (and said so), --keep-boundary.
+"$bin" --version >"$out/version" 2>&1 && grep -qE '^vrsimplify [0-9]+\.[0-9]+\.[0-9]+$' "$out/version" && ok ||
+  fail "--version: $(cat "$out/version")"
+"$bin" "$in" "$out/eq.ply" --ratio=0.1 --mode=surface >/dev/null 2>"$out/e" &&
+  "$bin" "$in" "$out/sp.ply" --ratio 0.1 --mode surface >/dev/null 2>>"$out/e" && cmp -s "$out/eq.ply" "$out/sp.ply" && ok ||
+  fail "--ratio=0.1 differs from --ratio 0.1: $(cat "$out/e")"
+expect_exit 2 "--json takes no value" "$bin" "$in" "$out/never.ply" --json=yes
+"$bin" "$in" "$out/never.ply" --frobnicate >/dev/null 2>"$out/e"
+[ "$(wc -l <"$out/e")" = 1 ] && grep -q "see vrsimplify --help" "$out/e" && ok ||
+  fail "a usage error is one line with a pointer to --help: $(cat "$out/e")"
+# The output's format first: with an input that does not even exist, the complaint is the output.
+expect_exit 2 "must end in .ply, .off, .obj or .stl" "$bin" "$out/missing.off" "$out/never.glb"
+[ ! -e "$out/never.glb" ] && ok || fail "an output of an unknown format was written"
+"$bin" "$in" "$out/nb.ply" --ratio 0.1 --json >"$out/nb.json" &&
+  ! grep -q '"error_bound_percent' "$out/nb.json" && [ "$(grep -o '"error_bound"' "$out/nb.json" | wc -l)" = 1 ] &&
+  grep -q '"boundary_simplified":false' "$out/nb.json" && ok ||
+  fail "a run without a bound reports one: $(cat "$out/nb.json")"
+"$bin" "$in" "$out/bo.ply" --max-error 0.5% >"$out/bo.txt" &&
+  grep -q '^bound:' "$out/bo.txt" && ! grep -q '^relaxed:' "$out/bo.txt" && ok ||
+  fail "--max-error alone: $(cat "$out/bo.txt")"
+# mushroom (CGAL) has a long border: at 1 % it alone would take more than a quarter of the target.
+mush=$3/mushroom.off
+if [ -f "$mush" ]; then
+  "$bin" "$mush" "$out/m1.ply" --ratio 0.01 --json >"$out/m1.json" &&
+    grep -q '"boundary_simplified":true' "$out/m1.json" && grep -q '"target_reached":true' "$out/m1.json" && ok ||
+    fail "mushroom at 1 %: $(cat "$out/m1.json")"
+  "$bin" "$mush" "$out/m2.ply" --ratio 0.01 --keep-boundary --json >"$out/m2.json" &&
+    grep -q '"boundary_simplified":false' "$out/m2.json" && grep -q '"kept":{"boundary":[1-9]' "$out/m2.json" && ok ||
+    fail "mushroom at 1 % --keep-boundary: $(cat "$out/m2.json")"
+  "$bin" "$mush" "$out/m3.ply" --ratio 0.5 --json >"$out/m3.json" &&
+    grep -q '"boundary_simplified":false' "$out/m3.json" && ok || fail "mushroom at 50 %: $(cat "$out/m3.json")"
+else
+  fail "mushroom.off missing from $3"
+fi
+
+# 10. Readers agree: one small mesh with a NaN vertex, as OFF, OBJ and ascii PLY, runs the same
+#     way in each (kept, counted) instead of being refused by one reader and read by another.
+printf 'OFF\n5 4 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\nnan 0.5 0.2\n3 0 1 4\n3 1 2 4\n3 2 3 4\n3 3 0 4\n' >"$out/nan.off"
+printf 'v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv nan 0.5 0.2\nf 1 2 5\nf 2 3 5\nf 3 4 5\nf 4 1 5\n' >"$out/nan.obj"
+printf 'ply\nformat ascii 1.0\nelement vertex 5\nproperty float x\nproperty float y\nproperty float z\nelement face 4\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n1 1 0\n0 1 0\nnan 0.5 0.2\n3 0 1 4\n3 1 2 4\n3 2 3 4\n3 3 0 4\n' >"$out/nan.ply"
+for ext in off obj ply; do
+  "$bin" "$out/nan.$ext" "$out/nan-out.$ext.ply" --ratio 0.5 --json >"$out/nan.$ext.json" 2>"$out/e" &&
+    [ "$(json_num "$out/nan.$ext.json" nonfinite_vertices)" = 1 ] &&
+    [ "$(json_num "$out/nan.$ext.json" output_faces)" = 4 ] && ok ||
+    fail "NaN vertex in .$ext: $(cat "$out/nan.$ext.json" "$out/e")"
+done
 
 # Outputs are written under a temporary name beside them and renamed once whole: after every
 # run above, written or refused, none is left.

@@ -12,7 +12,7 @@ struct RingCase {
   vrs::Mesh mesh;
   vrs::Topology topo;
   vrs::Ring ring;
-  std::vector<float> normals; // the input's unit vertex normals, as the driver's
+  std::vector<float> normals; // the input's normal cones (4 floats a vertex), as the driver's
 };
 
 // Builds the topology, the ring of `v` and the vertex normals of `s.mesh`.

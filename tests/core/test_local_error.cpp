@@ -36,8 +36,8 @@ Planned plan_centre(const Mesh& m, uint32_t v, Vec3 normal) {
   Planned p;
   EXPECT_EQ(t.ring(v, m.triangles.data(), 64, p.ring), VertexKind::Interior);
   Evaluator eval(Mode::Surface3D, {0, 0, 1}, m.positions.data());
-  std::vector<float> up(m.positions.size(), 0.0f);
-  for (size_t i = 2; i < up.size(); i += 3)
+  std::vector<float> up(4 * m.vertex_count(), 0.0f); // normal cones: +z, no spread
+  for (size_t i = 2; i < up.size(); i += 4)
     up[i] = 1.0f;
   // The projection only: these tests pin the error of the paper's filling.
   RemovalLimits limits;

@@ -30,10 +30,12 @@ TEST_P(RealMesh, KeepsTheInvariants) {
 
   EXPECT_EQ(vrs_test::check_indices(m), "");
   EXPECT_EQ(vrs_test::check_subset(in, m, r), "");
-  EXPECT_EQ(vrs_test::check_boundary_kept(in, m, r), "");
   const auto before = vrs_test::edge_stats(in), after = vrs_test::edge_stats(m);
   EXPECT_LE(after.nonmanifold, before.nonmanifold);
-  EXPECT_EQ(after.boundary, before.boundary); // boundary kept, so exactly the same edges
+  if (!r.boundary_simplified) { // kept unless it alone needed a quarter of the target
+    EXPECT_EQ(vrs_test::check_boundary_kept(in, m, r), "");
+    EXPECT_EQ(after.boundary, before.boundary); // boundary kept, so exactly the same edges
+  }
   EXPECT_EQ(after.euler(), before.euler());
   EXPECT_LE(vrs_test::count_degenerate(m), vrs_test::count_degenerate(in));
   EXPECT_EQ(vrs_test::count_duplicate_directed_edges(m), 0u);
@@ -53,17 +55,17 @@ TEST_P(RealMesh, KeepsTheInvariants) {
     EXPECT_EQ(r.stop, StopReason::NoCandidates);
     EXPECT_GT(m.face_count(), target);
   }
-  // A closed mesh reaches every target (MeshLab's QECD with Preserve Topology reaches these);
-  // an open one with its boundary kept may not, and then the report says the boundary is why.
-  // (Within 5 % or four vertices (8 faces): the last vertices of a coarse closed mesh can be
-  // all refused a few faces short, as elephant's at 1 %: 56 to 64 faces for 56 as the order
-  // of removals changes (the batches of threads, lazy re-pricing), where a thin leg or trunk
-  // is down to a triangular prism and every removal left would pinch it.)
+  // 10 % is reached. At 1 %, a closed mesh reaches the target or stops where every filling
+  // left would fold the surface over the input (elephant: 122 faces for 56, a thin leg or
+  // trunk down to a prism; MeshLab's QECD with Preserve Topology gets there by folding 14 % of
+  // the area over); an open one with its boundary kept may stop short too, and then the report
+  // says the boundary is why.
   if (ratio >= 0.1) {
     EXPECT_TRUE(r.target_reached) << m.face_count() << " faces for " << target;
   } else if (before.boundary == 0) {
-    EXPECT_LE(double(m.face_count()), std::max(1.05 * double(target), double(target + 8)))
-        << r.stop_detail;
+    if (double(m.face_count()) > std::max(1.05 * double(target), double(target + 8))) {
+      EXPECT_NE(r.stop_detail.find("would fold"), std::string::npos) << r.stop_detail;
+    }
   } else if (!r.target_reached) {
     EXPECT_NE(r.stop_detail.find("boundary simplification is off"), std::string::npos)
         << r.stop_detail;
@@ -103,13 +105,16 @@ TEST(FoldOverCheck, CatchesANewFaceTurnedOver) {
 }
 
 // What the fans are for: on elephant at 1 % the paper's projection alone runs out of removals
-// far above the target; the best of projection and fans gets there (within 5 %).
+// far above the target (278 faces for 56); the best of projection and fans goes less than half
+// as far from it, and stops where every filling left would fold the surface over the input
+// (122; with the input-normal veto lifted it reached 56 with 14 % of its area folded over).
 TEST(Fill, BestReachesWhatTheProjectionAloneCannot) {
   const std::string path = vrs_test::cgal_mesh("elephant.off");
   if (path.empty()) GTEST_FAIL() << "elephant.off missing: run scripts/setup.sh";
   const Mesh in = vrs_test::read_off(path);
   const size_t target = size_t(std::llround(0.01 * double(in.face_count())));
   size_t faces[2];
+  std::string why;
   for (Fill fill : {Fill::Projection, Fill::Best}) {
     Mesh m = in;
     Options o;
@@ -119,17 +124,22 @@ TEST(Fill, BestReachesWhatTheProjectionAloneCannot) {
     ASSERT_TRUE(r.ok);
     EXPECT_EQ(vrs_test::check_run(in, m, o, r), "");
     faces[fill == Fill::Best] = m.face_count();
+    why = r.stop_detail;
   }
   EXPECT_GT(double(faces[0]), 2.0 * double(target)) << "projection alone";
-  EXPECT_LE(double(faces[1]), std::max(1.05 * double(target), double(target + 8))) << "best";
+  EXPECT_LT(2 * (faces[1] - target), faces[0] - target) << "best";
+  if (faces[1] > target + 2) {
+    EXPECT_NE(why.find("would fold"), std::string::npos) << why;
+  }
 }
 
 // Closed meshes on which MeshLab's QECD with Preserve Topology reaches 1 % (and 10 % for the
-// shuffled one): before the last resort's least-cost filling, elk stopped at 44 faces for 33
-// and femur at 104 for 78 (every fan and the projection refused by a veto on each vertex
-// left); blobby-shuffled, its faces in random orientation, lost no vertex at all. Within 5 %
-// or 2 faces of the target, every invariant kept.
-TEST(Targets, ClosedMeshesReachWhatQecdWithPreserveTopologyReaches) {
+// shuffled one), folding parts over to get there. Before the last resort's least-cost filling,
+// elk stopped at 44 faces for 33 and femur at 104 for 78; with the fold-over judged against
+// the input (not only the faces a removal replaces), elk, femur and spool stop short again
+// (80, 90, 32 faces), where every filling left would fold: faithfully, and saying so. The
+// shuffled blobby, its faces in random orientation, gets there. Every invariant kept.
+TEST(Targets, ClosedMeshesReachTheTargetOrStopWhereOnlyFoldsAreLeft) {
   for (auto [name, ratio] : {std::pair{"elk.off", 0.01},
                              {"femur.off", 0.01},
                              {"spool.off", 0.01},
@@ -144,8 +154,12 @@ TEST(Targets, ClosedMeshesReachWhatQecdWithPreserveTopologyReaches) {
     o.target.ratio = ratio;
     const Report r = simplify(m, o);
     const double target = std::llround(ratio * double(in.face_count()));
-    EXPECT_LE(double(m.face_count()), std::max(1.05 * target, target + 2))
-        << name << " at " << ratio << ": " << r.stop_detail;
+    // Reached, or stopped short where every filling left would fold over the input (never
+    // folded to get there: check_run below).
+    if (double(m.face_count()) > std::max(1.05 * target, target + 2)) {
+      EXPECT_NE(r.stop_detail.find("would fold"), std::string::npos)
+          << name << " at " << ratio << ": " << r.stop_detail;
+    }
     EXPECT_EQ(vrs_test::check_run(in, m, o, r), "") << name << " at " << ratio;
   }
 }

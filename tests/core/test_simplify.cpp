@@ -77,15 +77,15 @@ TEST(Simplify, TetrahedronCannotLoseAVertex) {
     EXPECT_EQ(m.triangles, in.triangles);
     EXPECT_EQ(r.stop, StopReason::NoCandidates);
     EXPECT_FALSE(r.target_reached);
-    // Each vertex refused once, then once more by the last-resort pass (input-normal veto
-    // lifted) the unmet target starts.
-    EXPECT_EQ(r.rejected_total(), 8u);
+    // Each vertex refused once, once more when the input-normal veto is eased (one corner may
+    // disagree) and once more by the last-resort pass (lifted) the unmet target starts.
+    EXPECT_EQ(r.rejected_total(), 12u);
     EXPECT_EQ(r.relaxed_removals, 0u);
     // Each hole's only triangle is the opposite face. The local-error planning pass leaves
     // the mesh look-ups to the pop and sees first that the face would face inwards (in the
     // last-resort pass too: none of its corners' input normals agrees with it).
     const char* why = p == Priority::Factor ? "triangle_exists" : "flip";
-    EXPECT_EQ(r.rejected[p == Priority::Factor ? RejectTriangle : RejectFlip], 8u);
+    EXPECT_EQ(r.rejected[p == Priority::Factor ? RejectTriangle : RejectFlip], 12u);
     EXPECT_EQ(r.stop_detail,
               "remaining vertices: 4 refused by the vetoes (" + std::string(why) + " 4)");
   }
@@ -123,12 +123,51 @@ TEST(Simplify, LastResortCutsOutlineCornersOnlyForACountTarget) {
   Mesh in = vrs_test::grid(8), m = in;
   Options o = faces(0);
   o.simplify_boundary = true;
+  o.max_price_jump = 0; // the target at any cost
   Report r = simplify(m, o);
   expect_valid(in, m, r);
   EXPECT_GT(r.relaxed_removals, 0u);
   EXPECT_LT(xy_area2(m), 2 * 64.0 - 1);
   EXPECT_EQ(vrs_test::edge_stats(m).euler(), vrs_test::edge_stats(in).euler());
   EXPECT_GE(m.face_count(), 1u); // the last triangle is never cut: that would empty the disc
+}
+
+// Cutting the outline's corners off costs far more than anything removed before it: with the
+// default max_price_jump the run stops short instead, keeps the outline whole and says why.
+TEST(Simplify, StopsShortRatherThanCutTheOutline) {
+  Mesh in = vrs_test::grid(8), m = in;
+  Options o = faces(0);
+  o.simplify_boundary = true;
+  Report r = simplify(m, o);
+  expect_valid(in, m, r);
+  EXPECT_EQ(r.stop, StopReason::NoCandidates);
+  EXPECT_NEAR(xy_area2(m), 2 * 64.0, 1e-3);
+  EXPECT_NE(r.stop_detail.find("stopped short of the target"), std::string::npos) << r.stop_detail;
+  EXPECT_EQ(r.relaxed_removals, 0u);
+}
+
+// A border that alone needs more than a quarter of the faces asked for is simplified too (and
+// the report says so); with simplify_boundary_when_needed off it stays, as the paper has it.
+TEST(Simplify, KeptBorderThatWouldTakeTheTargetIsSimplifiedToo) {
+  const Mesh in = vrs_test::grid(16, 0.2f); // 512 faces, 64 border vertices: at least 62 faces
+  for (bool when_needed : {true, false}) {
+    Mesh m = in;
+    Options o = faces(100);
+    o.simplify_boundary_when_needed = when_needed;
+    Report r = simplify(m, o);
+    expect_valid(in, m, r);
+    EXPECT_EQ(r.boundary_simplified, when_needed);
+    EXPECT_EQ(vrs_test::check_boundary_kept(in, m, r) == "", !when_needed);
+    EXPECT_EQ(vrs_test::check_run(in, m, o, r), "");
+    if (when_needed) {
+      EXPECT_LE(m.face_count(), 100u);
+    }
+  }
+  // A target the kept border takes less than a quarter of leaves it alone.
+  Mesh m = in;
+  Report r = simplify(m, faces(300));
+  EXPECT_FALSE(r.boundary_simplified);
+  EXPECT_EQ(vrs_test::check_boundary_kept(in, m, r), "");
 }
 
 TEST(Simplify, EveryTargetKindIsMetAndNotOvershot) {

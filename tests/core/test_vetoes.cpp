@@ -31,8 +31,8 @@ TEST(Vetoes, FoldOverRefusesAFanTurnedOverTheFaceItReplaces) {
   // veto; make every corner's input normal ambiguous (both sides) so that only the fold-over
   // veto is left to see the turned-over triangle.
   limits.agreeing_corners = 1;
-  for (size_t i = 0; i < s.normals.size(); i += 3)
-    s.normals[i + 2] = (i / 3) % 2 ? 1.0f : -1.0f;
+  for (size_t i = 0; i < s.normals.size(); i += 4)
+    s.normals[i + 2] = (i / 4) % 2 ? 1.0f : -1.0f;
   Patch p = projected(s, 6, {0, 0, 1});
   for (int apex : {2, 4}) {
     ASSERT_TRUE(fill_candidate(s.ring, OpenRing::Border, 1 + apex, p));
@@ -44,7 +44,7 @@ TEST(Vetoes, FoldOverRefusesAFanTurnedOverTheFaceItReplaces) {
   EXPECT_EQ(veto_shape(s.ring, p, replaced(s, p, eval), s.normals.data(), limits, false),
             RejectCount);
   // With the input normals all up and their veto on, the same fan is refused by it first.
-  for (size_t i = 0; i < s.normals.size(); i += 3)
+  for (size_t i = 0; i < s.normals.size(); i += 4)
     s.normals[i + 2] = 1.0f;
   limits.agreeing_corners = 3;
   ASSERT_TRUE(fill_candidate(s.ring, OpenRing::Border, 1 + 2, p));

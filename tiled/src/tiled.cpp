@@ -222,6 +222,9 @@ void run_tile(const std::string& dir, int level, uint64_t tile, int lone_threads
   // One tile is the whole mesh, nothing locked: as in core, the last resort may reach the
   // target.
   opt.relax_to_reach_target = alone;
+  // A tile's cut is a border of its piece but no border of the mesh: only the whole mesh (the
+  // last level, in core) judges whether the border needs simplifying.
+  opt.simplify_boundary_when_needed = alone;
   opt.threads = alone ? std::max(0, lone_threads) : 1;
   opt.locked = &locked;
   const vrs::Report rep = vrs::simplify(mesh, opt);

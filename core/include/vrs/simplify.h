@@ -93,6 +93,13 @@ struct Options {
   // where the outline turns by more than 30°, are kept unless a count target cannot be met
   // otherwise (see Report::relaxed_removals).
   bool simplify_boundary = false;
+  // With a count target and boundary simplification off: when the kept border alone would
+  // take more than a quarter of the faces asked for (any triangulation keeping B border
+  // vertices of a surface of V vertices and F faces has at least 2B - 2V + F faces), the
+  // border is simplified too (Report::boundary_simplified), as QECD does by default. Kept
+  // whatever the target, such runs emptied the interior onto the border (a flat patch turned
+  // into a tent fanned from one corner, 29 % of the diagonal off). False: the paper's rule.
+  bool simplify_boundary_when_needed = true;
   // A triangle of the projection filling may turn at most this far from the average plane's
   // normal: the projection check alone allows up to 90°, and nearly vertical triangles are
   // folds in waiting. Fans are held instead to the faces they replace (no fold-over).
@@ -117,6 +124,20 @@ struct Options {
   // prices them all at once (the paper's way, and always with Priority::Factor, whose price
   // is cheap). Lazy halves the work or better; a neighbour whose price fell waits in place.
   bool lazy_reevaluation = true;
+  // With Priority::LocalError: each removed vertex is carried by the face nearest it; a
+  // removal is also priced by how far its patch stands from every input vertex its old faces
+  // carry (error against the input, not only the last step: error does not pile up where many
+  // steps each looked cheap), and refused where a new triangle would face against the input
+  // normal at a vertex it carries (a fold-over judged against the input, not against faces
+  // that may already lean far from it). Costs 8 bytes a vertex and 4 a face.
+  bool against_input = true;
+  // With Priority::LocalError and a count target: when the cheapest removal left would cost
+  // more than this many times the dearest one made so far (and more than 1e-3 of the
+  // bounding-box diagonal), the surface is about to change abruptly (a part dropped, a tunnel
+  // pressed flat) rather than lose detail. Then a new triangle may first face away from the
+  // input's normal at one of its three corners (until then at none); at the next such jump the
+  // run stops short (StopReason::NoCandidates, stop_detail says so). 0: the target at any cost.
+  double max_price_jump = 10.0;
   // Threads to plan removals on (0: the machine's hardware threads). The output is the same
   // whatever the number: independent removals are planned together, committed in queue order.
   int threads = 0;
@@ -191,12 +212,18 @@ struct Report {
   size_t constrained_edges = 0;     // constrained edges of the input (given and by feature angle)
   size_t unreferenced_vertices = 0; // left untouched
 
-  // Removals made by the last resort: when nothing else was left to remove and a count target
-  // was not met, a new triangle has to face the input's side at one of its corners only,
+  // Removals made once the input-normal veto was eased (a new triangle may face away from the
+  // input's normal at one of its three corners: when most of what is left is refused by that
+  // veto alone, or at a price jump, see max_price_jump) or lifted by the last resort: when
+  // nothing else was left to remove and a count target was not met, a new triangle has to
+  // face the input's side at one of its corners only,
   // outline corners may go, and where every fan and the projection of an interior vertex is
   // refused, the ring's triangulation that stands nearest the old fan, of those no veto
   // refuses, is taken. It still may not fold over the faces it replaces.
   size_t relaxed_removals = 0;
+  // Options::simplify_boundary_when_needed acted: the kept border alone needed more than a
+  // quarter of the faces asked for, so border vertices were removed too.
+  bool boundary_simplified = false;
   // When the target was not reached (stop == NoCandidates): what keeps the remaining
   // vertices, e.g. "remaining vertices: 64 on the boundary, kept (boundary simplification is
   // off); 2 refused by the vetoes (fold 1, edge_exists 1)".

@@ -1,0 +1,99 @@
+#include "carried_points.h"
+
+#include <array>
+#include <limits>
+
+#include "local_error.h"
+
+namespace vrs {
+
+namespace {
+
+// Squared distance from x to the nearest of the patch's triangles, or any value <= `enough`
+// as soon as one triangle is that near (the caller only needs to know x is no farther).
+double nearest2(Vec3 x, const Patch& patch, double enough, int* which = nullptr) {
+  double best = std::numeric_limits<double>::infinity();
+  for (int t = 0; t < patch.count; ++t) {
+    const auto& tri = patch.tri[t];
+    const Vec3 a = patch.q[tri[0]], b = patch.q[tri[1]], c = patch.q[tri[2]];
+    const Vec3 m = cross(b - a, c - a);
+    const double h = dot(x - a, m), mm = dot(m, m);
+    if (mm > 0 && h * h >= best * mm) continue; // its plane is farther than the best so far
+    const double d = point_triangle_distance2(x, a, b, c);
+    if (d < best) {
+      best = d;
+      if (which) *which = t;
+      if (best <= enough) break;
+    }
+  }
+  return best;
+}
+
+} // namespace
+
+double CarriedPoints::farthest2(const Ring& ring, const Patch& patch, const Evaluator& eval) const {
+  if (patch.count == 0) return 0; // a triangle cut off: its points leave with it
+  double worst = 0;
+  for (int i = 0; i < ring.faces; ++i)
+    for (uint32_t p = head_[ring.f[i]]; p != kNone; p = next_[p])
+      worst = std::max(worst, nearest2(eval.position(p), patch, worst));
+  return worst;
+}
+
+bool CarriedPoints::folds_input(uint32_t v, const Ring& ring, const Patch& patch,
+                                const Evaluator& eval, const float* cones) const {
+  if (patch.count == 0) return false;
+  std::array<Vec3, kMaxRing> n; // the new triangles' unit normals
+  for (int t = 0; t < patch.count; ++t) {
+    const auto& tri = patch.tri[t];
+    n[t] = normalized(cross(patch.q[tri[1]] - patch.q[tri[0]], patch.q[tri[2]] - patch.q[tri[0]]));
+  }
+  const Vec3 c = eval.position(v);
+  auto folds_at = [&](uint32_t p) {
+    const Vec3 d = eval.position(p) - c;
+    const Vec2 s{dot(d, patch.u), dot(d, patch.w)};
+    const float* cone = cones + 4 * size_t(p);
+    const Vec3 axis{cone[0], cone[1], cone[2]};
+    for (int t = 0; t < patch.count; ++t) {
+      const auto& tri = patch.tri[t];
+      const Vec2 a = patch.p[tri[0]], b = patch.p[tri[1]], e = patch.p[tri[2]];
+      if (orient2d(a, b, s) >= 0 && orient2d(b, e, s) >= 0 && orient2d(e, a, s) >= 0)
+        return !(dot(n[t], axis) > -cone[3]);
+    }
+    return false; // projects outside the patch: another removal's business
+  };
+  if (folds_at(v)) return true;
+  for (int i = 0; i < ring.faces; ++i)
+    for (uint32_t p = head_[ring.f[i]]; p != kNone; p = next_[p])
+      if (folds_at(p)) return true;
+  return false;
+}
+
+void CarriedPoints::hand_over(uint32_t v, const Ring& ring, const Patch& patch,
+                              const Evaluator& eval) {
+  // One chain of every point the old faces carried, v first; the slots are emptied.
+  uint32_t chain = v;
+  next_[v] = kNone;
+  for (int i = 0; i < ring.faces; ++i) {
+    uint32_t& h = head_[ring.f[i]];
+    for (uint32_t p = h; p != kNone;) {
+      const uint32_t after = next_[p];
+      next_[p] = chain;
+      chain = p;
+      p = after;
+    }
+    h = kNone;
+  }
+  if (patch.count == 0) return; // nothing stands for them any more: the triangle went
+  for (uint32_t p = chain; p != kNone;) {
+    const uint32_t after = next_[p];
+    int t = 0;
+    nearest2(eval.position(p), patch, -1.0, &t);
+    uint32_t& h = head_[ring.f[t]];
+    next_[p] = h;
+    h = p;
+    p = after;
+  }
+}
+
+} // namespace vrs

@@ -1,0 +1,48 @@
+// Error against the input, not only the last step: every removed vertex is carried by the face
+// of today's mesh that stands nearest it, so a removal's price can also ask how far the new
+// patch stands from every input vertex the old fan already stood for. A price that sees the
+// last step only lets error pile up where many steps each looked cheap (a smooth part emptied
+// into a few large triangles while rough parts keep their detail).
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "evaluation.h"
+#include "topology.h"
+#include "triangulation.h"
+
+namespace vrs {
+
+class CarriedPoints {
+ public:
+  void init(size_t face_slots, size_t vertices) {
+    head_.assign(face_slots, kNone);
+    next_.assign(vertices, kNone);
+  }
+  bool active() const { return !head_.empty(); }
+
+  // Squared distance to the patch (as planned over `ring`) of the farthest point the ring's
+  // faces carry; 0 when they carry none. Reads only (the workers plan in parallel).
+  double farthest2(const Ring& ring, const Patch& patch, const Evaluator& eval) const;
+
+  // After v's removal wrote the patch into the ring's face slots (new triangle i in slot
+  // ring.f[i]): the old faces' points and v go to the new triangle nearest each. Touches only
+  // the ring's slots and those points: removals of a batch hand over in parallel.
+  void hand_over(uint32_t v, const Ring& ring, const Patch& patch, const Evaluator& eval);
+
+  // Whether a new triangle turns over against the input surface it stands for: of the points
+  // the ring's faces carry, and v, each one that projects (along the plan's normal) into a new
+  // triangle must lie where that triangle faces the input's side, within the input's normal
+  // cone there (`cones`: vertex_normals(), 4 floats a vertex). The old faces only stand for
+  // the input; after many removals they can lean far from it, and a fold-over is judged
+  // against the input.
+  bool folds_input(uint32_t v, const Ring& ring, const Patch& patch, const Evaluator& eval,
+                   const float* cones) const;
+
+ private:
+  std::vector<uint32_t> head_; // per face slot: the first point it carries, or kNone
+  std::vector<uint32_t> next_; // per vertex: the next point of the same face, or kNone
+};
+
+} // namespace vrs
