@@ -1,5 +1,6 @@
 // Read and classify: degenerate faces out, spatial order, locks, topology, orientation,
 // constraints, normals, then every vertex's kind and first price.
+#include <algorithm>
 #include <limits>
 
 #include "local_error.h"
@@ -46,6 +47,32 @@ bool Simplifier::border_needs_simplifying() const {
   const double least = 2.0 * double(border) - 2.0 * double(used) + double(faces0_);
   return (target_faces_ && least > 0.25 * double(target_faces_)) ||
          (target_vertices_ && double(border) > 0.25 * double(target_vertices_));
+}
+
+void Simplifier::lock_split_seams() {
+  // Border vertices at exactly the position of another border vertex: a seam written as split
+  // vertices (meshes loaded for rendering, trimesh's UV seams). Each side is a border of its
+  // own; simplified apart, the two would open a crack. They stay, as without the border rule.
+  const auto& t = mesh_.triangles;
+  std::vector<uint32_t> border;
+  Ring ring;
+  for (uint32_t v = 0; v < mesh_.vertex_count(); ++v) {
+    const VertexKind k = topo_.ring(v, t.data(), opt_.max_valence, ring);
+    if (k == VertexKind::Boundary || k == VertexKind::Corner) border.push_back(v);
+  }
+  const float* p = mesh_.positions.data();
+  auto less = [p](uint32_t a, uint32_t b) {
+    return std::lexicographical_compare(p + 3 * size_t(a), p + 3 * size_t(a) + 3, p + 3 * size_t(b),
+                                        p + 3 * size_t(b) + 3);
+  };
+  auto same = [p](uint32_t a, uint32_t b) {
+    return std::equal(p + 3 * size_t(a), p + 3 * size_t(a) + 3, p + 3 * size_t(b));
+  };
+  std::sort(border.begin(), border.end(), less);
+  for (size_t i = 0; i + 1 < border.size(); ++i)
+    if (same(border[i], border[i + 1]))
+      flags_[border[i]] |= kFlagTwin | kFlagLocked,
+          flags_[border[i + 1]] |= kFlagTwin | kFlagLocked;
 }
 
 void Simplifier::prepare() {
@@ -131,8 +158,9 @@ void Simplifier::prepare() {
                       ? static_cast<size_t>(std::llround(opt_.target.ratio * faces0_))
                       : 0;
   target_vertices_ = tk == TargetKind::Vertices ? opt_.target.vertices : 0;
-  if (!simplify_boundary_ && opt_.simplify_boundary_when_needed)
-    simplify_boundary_ = rep_.boundary_simplified = border_needs_simplifying();
+  if (!simplify_boundary_ && opt_.simplify_boundary_when_needed &&
+      (simplify_boundary_ = rep_.boundary_simplified = border_needs_simplifying()))
+    lock_split_seams();
   // Every vertex's kind and first price, on the workers (reads only; each writes its own
   // slots), then the counts in vertex order.
   constexpr uint8_t kKeptOnConstraints = 128; // beside the VertexKind
@@ -164,6 +192,10 @@ void Simplifier::prepare() {
     case VertexKind::Interior: break;
     }
     ++vertices_;
+    if (flags_[v] & kFlagTwin) {
+      ++rep_.kept_boundary;
+      continue;
+    }
     if (flags_[v] & kFlagLocked) {
       ++rep_.kept_locked;
       continue;

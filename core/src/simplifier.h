@@ -39,6 +39,9 @@ class Simplifier {
   // Options::simplify_boundary_when_needed: whether the kept border would take more than a
   // quarter of the count target (setup.cpp).
   bool border_needs_simplifying() const;
+  // Then the border vertices at another border vertex's exact position (a seam of split
+  // vertices) stay: kFlagTwin.
+  void lock_split_seams();
   template <class Queue> void run(Queue& queue); // simplifier.cpp
   void compact();                                // output.cpp
   // Why the remaining vertices stay, when the target was not met (Report::stop_detail).

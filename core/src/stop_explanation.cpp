@@ -18,6 +18,8 @@ std::string explain_remaining(const Remaining& r, bool simplify_boundary, bool l
   add(r.corners, "at corners of the outline");
   add(r.constrained, "on seams or creases where they end, meet or cross");
   add(r.locked, "locked");
+  add(r.split_seam, "on a seam of split vertices, kept (simplified apart, its two sides would "
+                    "open a crack)");
   add(r.nonmanifold, "non-manifold or inconsistently oriented");
   add(r.high_valence, "of too high valence");
   std::string vetoes;
@@ -55,7 +57,9 @@ std::string Simplifier::explain_stop() const {
   for (uint32_t v = 0; v < mesh_.vertex_count(); ++v) {
     if (flags_[v] & kFlagRemoved || topo_.valence(v) == 0) continue;
     VertexKind kind = topo_.ring(v, mesh_.triangles.data(), opt_.max_valence, ring);
-    if (flags_[v] & kFlagLocked)
+    if (flags_[v] & kFlagTwin)
+      ++r.split_seam;
+    else if (flags_[v] & kFlagLocked)
       ++r.locked;
     else if (kind == VertexKind::NonManifold)
       ++r.nonmanifold;

@@ -15,6 +15,7 @@ struct Remaining {
   size_t corners = 0;      // removable boundary vertices never planned (outline corners)
   size_t constrained = 0;  // where seams or creases end, meet or cross
   size_t locked = 0;       // by the user, or next to a non-finite position
+  size_t split_seam = 0;   // border vertices at another's position (kFlagTwin)
   size_t nonmanifold = 0;  // non-manifold or inconsistently oriented
   size_t high_valence = 0; // more neighbours than the cap
   size_t untried = 0;      // no usable plane

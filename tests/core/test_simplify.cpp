@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 
 #include "mesh_checks.h"
 #include "test_meshes.h"
@@ -168,6 +169,42 @@ TEST(Simplify, KeptBorderThatWouldTakeTheTargetIsSimplifiedToo) {
   Report r = simplify(m, faces(300));
   EXPECT_FALSE(r.boundary_simplified);
   EXPECT_EQ(vrs_test::check_boundary_kept(in, m, r), "");
+}
+
+// A seam written as split vertices (two halves of a grid that share a column of positions but
+// not its vertices): when the border rule simplifies the border, that column stays on both
+// sides, so the halves still meet without a crack; the outer border is simplified.
+TEST(Simplify, SplitSeamStaysWhenTheBorderIsSimplified) {
+  const int n = 16;
+  Mesh in;
+  // Left half columns 0..8, right half columns 8..16 with column 8 written twice.
+  auto add_half = [&](int x0) {
+    const uint32_t base = uint32_t(in.vertex_count());
+    for (int y = 0; y <= n; ++y)
+      for (int x = x0; x <= x0 + n / 2; ++x)
+        in.positions.insert(in.positions.end(),
+                            {float(x), float(y), 0.3f * std::sin(0.7f * float(x * y))});
+    const uint32_t w = n / 2 + 1;
+    for (uint32_t y = 0; y < uint32_t(n); ++y)
+      for (uint32_t x = 0; x + 1 < w; ++x) {
+        const uint32_t a = base + y * w + x;
+        in.triangles.insert(in.triangles.end(), {a, a + 1, a + w + 1, a, a + w + 1, a + w});
+      }
+  };
+  add_half(0);
+  add_half(n / 2);
+  Mesh m = in;
+  Report r = simplify(m, faces(60));
+  expect_valid(in, m, r);
+  ASSERT_TRUE(r.boundary_simplified);
+  const uint32_t w = n / 2 + 1, half = uint32_t(in.vertex_count() / 2);
+  size_t outer_removed = 0;
+  for (uint32_t y = 0; y <= uint32_t(n); ++y) {
+    EXPECT_NE(r.remap[y * w + w - 1], kRemoved) << "left side of the seam, row " << y;
+    EXPECT_NE(r.remap[half + y * w], kRemoved) << "right side of the seam, row " << y;
+    outer_removed += r.remap[y * w] == kRemoved;
+  }
+  EXPECT_GT(outer_removed, 0u); // the outer border was simplified
 }
 
 TEST(Simplify, EveryTargetKindIsMetAndNotOvershot) {
