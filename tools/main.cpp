@@ -180,6 +180,7 @@ int main(int argc, char** argv) {
   double max_error = 0; // mesh units, or percent of the diagonal
   bool max_error_percent = false, error_bound = false;
   vrs_tool::TiledRequest tiled; // --memory / --scheduler
+  std::string not_tiled;        // the first option a tiled run would not honour
   for (int i = 1; i < argc; ++i) {
     std::string a = argv[i];
     // --opt=value: the value is what follows the '=', and only an option that takes one may
@@ -202,6 +203,11 @@ int main(int argc, char** argv) {
       return argv[++i];
     };
     const char* v = nullptr;
+    // Options a tiled run does not honour yet: it refuses them by name (never ignores them).
+    for (const char* o : {"--ascii", "--simplify-boundary", "--keep-boundary", "--max-jump",
+                          "--error-bound", "--mode", "--queue", "--fill", "--priority", "--mapping",
+                          "--feature-angle", "--reprice", "--intervals", "--threads"})
+      if (a == o && not_tiled.empty()) not_tiled = a;
     if (a == "--help" || a == "-h") {
       std::printf("%s", kUsage);
       return 0;
@@ -328,6 +334,14 @@ int main(int argc, char** argv) {
     if (!tiled.scheduler.empty() || !vrs::tiled::fits_in_core(faces, tiled.memory)) {
       if (targets > 1 || opt.target.kind != vrs::TargetKind::Ratio || max_error > 0)
         return usage_error("tiled runs (--memory, --scheduler) take --ratio only");
+      if (!not_tiled.empty())
+        return usage_error("tiled runs (--memory, --scheduler) do not take " + not_tiled +
+                           " yet; without --memory the run is in core");
+      const std::string ext = out.size() >= 4 ? out.substr(out.size() - 4) : "";
+      if (ext != ".ply" && ext != ".PLY" && ext != ".obj" && ext != ".OBJ")
+        return usage_error("tiled runs (--memory, --scheduler) write .ply (binary) or .obj only, "
+                           "not " +
+                           out);
       tiled.input = in, tiled.output = out, tiled.ratio = opt.target.ratio;
       tiled.json = json;
       tiled.progress = progress == 1 || (progress == -1 && isatty(STDERR_FILENO));

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
@@ -126,20 +127,23 @@ int run_in(const std::string& dir, const TiledRequest& r, int workers) {
   }
   if (!r.keep_workdir) vrs::tiled::discard(dir);
   const double seconds = std::chrono::duration<double>(clock::now() - t0).count();
-  const uint64_t target = uint64_t(r.ratio * double(input_faces));
+  // The target as the core rounds it, and the in-core report's keys for whether it was met.
+  const uint64_t target = uint64_t(std::llround(r.ratio * double(input_faces)));
+  const bool reached = output_faces <= target;
   if (r.json)
     std::printf("{\"ok\":true,\"tiled\":true,\"input_faces\":%llu,\"output_faces\":%llu,"
-                "\"target_faces\":%llu,\"levels\":%d,\"workers\":%d,\"faces_per_tile\":%llu,"
-                "\"seconds_total\":%.6f}\n",
+                "\"target_faces\":%llu,\"stop_reason\":\"%s\",\"target_reached\":%s,"
+                "\"levels\":%d,\"workers\":%d,\"faces_per_tile\":%llu,\"seconds_total\":%.6f}\n",
                 (unsigned long long)input_faces, (unsigned long long)output_faces,
-                (unsigned long long)target, levels, workers, (unsigned long long)s.faces_per_tile,
+                (unsigned long long)target, reached ? "target_reached" : "no_candidates",
+                reached ? "true" : "false", levels, workers, (unsigned long long)s.faces_per_tile,
                 seconds);
   else
-    std::printf("tiled:   %llu -> %llu faces (target %llu) in %d levels on %d processes, "
+    std::printf("tiled:   %llu -> %llu faces (target %llu%s) in %d levels on %d processes, "
                 "tiles of up to %llu faces, %.3f s\n",
                 (unsigned long long)input_faces, (unsigned long long)output_faces,
-                (unsigned long long)target, levels, workers, (unsigned long long)s.faces_per_tile,
-                seconds);
+                (unsigned long long)target, reached ? "" : ", NOT reached", levels, workers,
+                (unsigned long long)s.faces_per_tile, seconds);
   return 0;
 }
 

@@ -124,8 +124,10 @@ def test_a_named_work_directory_keeps_what_it_held(big, tmp_path):
 def test_one_worker_or_two_the_same_output(big, tmp_path):
     src, v, f = big
     one, two = tmp_path / "one.ply", tmp_path / "two.obj"
-    vrsimplify.tiled.simplify(src, one, ratio=0.01, memory="64M", workers=1)
-    vrsimplify.tiled.simplify(src, two, ratio=0.01, memory="64M", workers=2)
+    r1 = vrsimplify.tiled.simplify(src, one, ratio=0.01, memory="64M", workers=1)
+    r2 = vrsimplify.tiled.simplify(src, two, ratio=0.01, memory="64M", workers=0)  # the cores
+    assert r1["output_faces"] == r2["output_faces"] and r1["target_reached"] in (True, False)
+    assert r1["stop_reason"] == ("target_reached" if r1["target_reached"] else "no_candidates")
     check_output(one, v, f, 0.01)
     v1, f1 = read_ply(one)
     lines = two.read_text().split("\n")
@@ -187,3 +189,8 @@ def test_bad_input_is_a_clear_error_and_leaves_nothing(big, tmp_path):
                                   workdir=str(blocked / "sub"))
     with pytest.raises(ValueError, match="memory"):
         vrsimplify.tiled.simplify(src, tmp_path / "o.ply", ratio=0.1, memory="lots")
+    # An output format the tiled writer does not have is refused before any work.
+    for name in ("o.off", "o.stl"):
+        with pytest.raises(ValueError, match=r"\.ply \(binary\) or \.obj only"):
+            vrsimplify.tiled.simplify(src, tmp_path / name, ratio=0.1, memory="64M")
+        assert not (tmp_path / name).exists() and not list(tmp_path.glob("vrsimplify-tiles-*"))

@@ -18,6 +18,7 @@ tiles. Command line: ``python -m vrsimplify.tiled IN OUT --ratio R [--scheduler 
 from __future__ import annotations
 
 import argparse
+import math
 import os
 import sys
 import time
@@ -60,6 +61,8 @@ def simplify(src: Union[str, os.PathLike], dst: Union[str, os.PathLike], *, rati
     an unwritable work directory) and leaves no output file behind.
     """
     src, dst = os.fspath(src), os.fspath(dst)
+    if not dst.lower().endswith((".ply", ".obj")):  # before any work: never a PLY in a .off
+        raise ValueError(f"tiled runs write .ply (binary) or .obj only, not {dst}")
     budget = memory if isinstance(memory, int) else _core.tiled_parse_memory(str(memory))
     if not budget:
         raise ValueError(f"memory must be a size such as 512M or 2G, got {memory!r}")
@@ -101,8 +104,11 @@ def simplify(src: Union[str, os.PathLike], dst: Union[str, os.PathLike], *, rati
             _core.tiled_discard(local)
             if store:
                 _remote_tiles.remove(*store)
-    return {"input_faces": input_faces, "output_faces": output_faces,
-            "target_faces": int(ratio * input_faces), "levels": levels,
+    target = int(math.floor(ratio * input_faces + 0.5))  # as the core rounds it (llround)
+    return {"input_faces": input_faces, "output_faces": output_faces, "target_faces": target,
+            "target_reached": output_faces <= target,
+            "stop_reason": "target_reached" if output_faces <= target else "no_candidates",
+            "levels": levels,
             "faces_per_tile": _core.tiled_faces_for_memory(budget),
             "seconds": time.perf_counter() - t0, "workdir": local}
 

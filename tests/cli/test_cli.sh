@@ -188,6 +188,14 @@ mkdir -p "$out/scratch" && echo mine >"$out/scratch/keep.txt"
   ! grep -q '"tiled"' "$out/incore.json" && ok || fail "--memory 2G did not run in core"
 "$bin" "$in" "$out/x.ply" --memory lots 2>"$out/err"; [ $? -eq 2 ] && grep -q "memory needs a size" "$out/err" && ok ||
   fail "--memory lots: $(cat "$out/err")"
+# The tiled path honours what it is given or refuses it by name, before any work; it writes
+# .ply only; its JSON says whether the target was met, with the in-core report's keys.
+expect_exit 2 "do not take --mode" "$bin" "$in" "$out/never.ply" --ratio 0.1 --memory 1M --mode terrain
+expect_exit 2 "do not take --ascii" "$bin" "$in" "$out/never.ply" --ratio 0.1 --memory 1M --ascii
+expect_exit 2 "write .ply (binary) or .obj only" "$bin" "$in" "$out/never.off" --ratio 0.1 --memory 1M
+[ ! -e "$out/never.off" ] && ok || fail "a tiled run wrote into an .off"
+grep -q '"stop_reason":"target_reached","target_reached":true' "$out/tiled.json" && ok ||
+  fail "tiled JSON without stop_reason/target_reached: $(cat "$out/tiled.json")"
 "$bin" "$in" "$out/x.ply" --faces 100 --memory 1M 2>"$out/err"; [ $? -eq 2 ] && grep -q "take --ratio only" "$out/err" && ok ||
   fail "--faces with tiles: $(cat "$out/err")"
 

@@ -18,6 +18,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
+#include <thread>
+
 #include "tile_files.h"
 #include "vrs/tiled.h"
 
@@ -25,7 +27,9 @@ namespace vrs::tiled {
 
 void run_level_locally(const std::string& workdir, const Level& level, int workers, bool progress,
                        const std::function<void()>& interrupted) {
-  const int cores = std::max(workers, 1); // a lone tile's threads
+  // 0: the machine's cores, as documented (and as the CLI counts them).
+  if (workers <= 0) workers = int(std::max(1u, std::thread::hardware_concurrency()));
+  const int cores = workers; // a lone tile's threads
   workers = int(std::max<uint64_t>(1, std::min<uint64_t>({uint64_t(std::max(workers, 1)),
                                                           uint64_t(kTilesInMemory), level.tiles})));
   if (progress)
