@@ -1,6 +1,7 @@
 #include "mesh_io.h"
 
 #include "vcg_mesh.h"
+#include "vrs/tiled.h"
 
 #include <cerrno>
 #include <csignal>
@@ -62,6 +63,10 @@ LoadResult load(const std::string& path) {
       error = read_stl(path, *doc);
     } else if (ends_with(path, ".off")) {
       error = read_off(path, *doc);
+    } else if (!(error = vrs::tiled::check_mesh_file(path)).empty()) {
+      // The streaming reader first, in constant memory: vcglib allocates what a header
+      // declares (4e9 vertices: an allocator's message) and reads a list of 4e9 indices that
+      // holds three as one face with one corner missing.
     } else {
       // vcglib reads into the optional components only when they are on: ask the file first.
       int wanted = 0;
@@ -70,8 +75,9 @@ LoadResult load(const std::string& path) {
       if (err != 0 && vcg::tri::io::Importer<VcgMesh>::ErrorCritical(err))
         error = vcg::tri::io::Importer<VcgMesh>::ErrorMsg(err);
     }
-  } catch (const std::exception& e) { // a malformed file asking for absurd allocations
-    error = std::string("malformed file (") + e.what() + ")";
+  } catch (const std::exception&) { // a malformed file asking for absurd allocations
+    // Never the library's own words ("vector::_M_default_append"): they say nothing to a user.
+    error = "malformed file: it declares more than it holds";
   }
   if (!error.empty()) {
     r.error = "cannot read " + path + ": " + error;

@@ -237,6 +237,14 @@ else
   fail "mushroom.off missing from $3"
 fi
 
+# Hostile PLY files: a face list claiming 4e9 indices that holds three, a header claiming 4e9
+# vertices: refused with the element that is wrong, never an allocator's words, no output.
+printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uint int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n4000000000 0 1 2\n' >"$out/long-list.ply"
+expect_exit 3 "malformed PLY face 0" "$bin" "$out/long-list.ply" "$out/never.ply"
+printf 'ply\nformat ascii 1.0\nelement vertex 4000000000\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n' >"$out/huge-header.ply"
+expect_exit 3 "truncated or malformed PLY vertex" "$bin" "$out/huge-header.ply" "$out/never.ply"
+! grep -q "_M_\|vector::\|std::" "$out/e" && ok || fail "a C++ library's words in an error: $(cat "$out/e")"
+
 # 10. Readers agree: one small mesh with a NaN vertex, as OFF, OBJ and ascii PLY, runs the same
 #     way in each (kept, counted) instead of being refused by one reader and read by another.
 printf 'OFF\n5 4 0\n0 0 0\n1 0 0\n1 1 0\n0 1 0\nnan 0.5 0.2\n3 0 1 4\n3 1 2 4\n3 2 3 4\n3 3 0 4\n' >"$out/nan.off"

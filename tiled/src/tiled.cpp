@@ -387,4 +387,21 @@ uint64_t parse_memory(const std::string& text) {
   return uint64_t(v * scale);
 }
 
+std::string check_mesh_file(const std::string& path) {
+  std::FILE* in = std::fopen(path.c_str(), "rb");
+  if (!in) return std::strerror(errno);
+  int64_t vertices = 0, lowest = 0, highest = -1;
+  StreamSink sink{[&](const float*) { ++vertices; },
+                  [&](const int64_t v[3]) {
+                    for (int c = 0; c < 3; ++c)
+                      lowest = std::min(lowest, v[c]), highest = std::max(highest, v[c]);
+                  }};
+  std::string error = read_mesh_stream(in, path, sink);
+  std::fclose(in);
+  if (error.empty() && (lowest < 0 || highest >= vertices))
+    error = "a face's vertex index (" + std::to_string(lowest < 0 ? lowest : highest) +
+            ") is out of range: the file has " + std::to_string(vertices) + " vertices";
+  return error;
+}
+
 } // namespace vrs::tiled

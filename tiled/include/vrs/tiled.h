@@ -65,6 +65,11 @@ bool fits_in_core(uint64_t faces, uint64_t bytes);
 // "2G", "512M", "1.5G", "800000K" -> bytes; 0 when unreadable.
 uint64_t parse_memory(const std::string& text);
 
+// Reads the mesh file through the streaming reader, keeping nothing: "" when it is well formed,
+// else what is wrong and where (as begin() would say). In constant memory, whatever the file
+// claims: the in-core readers' check before they allocate what a header declares.
+std::string check_mesh_file(const std::string& path);
+
 // Runs every tile of `level` on `workers` local processes (fork; at most kTilesInMemory): the
 // embedded default. When a signal interrupts the wait, `interrupted` (if any) is called: if it
 // throws, the workers are killed and reaped, then the exception goes on (Python's Ctrl-C).
