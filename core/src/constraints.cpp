@@ -20,7 +20,7 @@ size_t Constraints::build(const Options& o, const float* pos, const std::vector<
   if (given) {
     const auto& e = *o.constrained_edges;
     for (size_t i = 0; i + 1 < e.size(); i += 2)
-      if (topo.has_edge(e[i], e[i + 1], tris.data())) add(e[i], e[i + 1]);
+      if (topo.edge_faces(e[i], e[i + 1], tris.data()) > 0) add(e[i], e[i + 1]); // exact, once
   }
   if (o.feature_angle_deg > 0) {
     // Each manifold edge once, from the face that holds it as (a, b) with a < b... both faces

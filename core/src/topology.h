@@ -1,6 +1,7 @@
 // Vertex -> triangle adjacency that follows removals, and the ordered ring of a vertex.
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <cstddef>
 #include <cstdint>
@@ -40,6 +41,9 @@ inline void prefetch(const void* p) {
 #endif
 }
 
+// Vertices of more faces are hubs: has_edge() answers "yes" between two of them unasked.
+constexpr uint32_t kHubFaces = 1024;
+
 class Topology {
  public:
   // `triangles` must hold valid indices with three distinct corners each; it is read, not kept.
@@ -69,11 +73,16 @@ class Topology {
     prefetch(&count_[v]);
   }
   void prefetch_faces(uint32_t v, const uint32_t* tris) const {
+    // A ring's worth at most: a hub's 100 000 faces, asked for at every plan next to it, made
+    // a double cone quadratic.
     const uint32_t* s = faces_of(v);
-    for (uint32_t i = 0; i < count_[v]; ++i)
+    const uint32_t n = std::min<uint32_t>(count_[v], kMaxRing);
+    for (uint32_t i = 0; i < n; ++i)
       prefetch(tris + 3 * s[i]);
   }
 
+  // Whether (a, b) is an edge; between two hubs (kHubFaces) "yes" without a look (callers only
+  // refuse to make an edge that exists).
   bool has_edge(uint32_t a, uint32_t b, const uint32_t* tris) const;
   int edge_faces(uint32_t a, uint32_t b, const uint32_t* tris) const; // faces holding edge (a, b)
   bool has_triangle(uint32_t a, uint32_t b, uint32_t c, const uint32_t* tris) const;
