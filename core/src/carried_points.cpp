@@ -44,16 +44,27 @@ bool CarriedPoints::folds_input(uint32_t v, const Ring& ring, const Patch& patch
                                 const Evaluator& eval, const float* cones) const {
   if (patch.count == 0) return false;
   std::array<Vec3, kMaxRing> n; // the new triangles' unit normals
+  // Their spread around the plan's normal N: all within the angle b of it (cos b = least).
+  double least = 1;
   for (int t = 0; t < patch.count; ++t) {
     const auto& tri = patch.tri[t];
     n[t] = normalized(cross(patch.q[tri[1]] - patch.q[tri[0]], patch.q[tri[2]] - patch.q[tri[0]]));
+    least = std::min(least, dot(n[t], patch.normal));
   }
+  const double sin_b = std::sqrt(std::max(0.0, 1 - least * least));
   const Vec3 c = eval.position(v);
   auto folds_at = [&](uint32_t p) {
-    const Vec3 d = eval.position(p) - c;
-    const Vec2 s{dot(d, patch.u), dot(d, patch.w)};
     const float* cone = cones + 4 * size_t(p);
     const Vec3 axis{cone[0], cone[1], cone[2]};
+    // No new triangle can face away when the cone axis is within a of N and a + b stays under
+    // 90 degrees plus the cone's own spread: cos(a + b) > -slack. The common case on a smooth
+    // part, decided without looking for the triangle the point lies under.
+    const double cos_a = dot(axis, patch.normal);
+    if (least > 0 && cos_a > 0 &&
+        cos_a * least - std::sqrt(std::max(0.0, 1 - cos_a * cos_a)) * sin_b > -cone[3] + 1e-9)
+      return false;
+    const Vec3 d = eval.position(p) - c;
+    const Vec2 s{dot(d, patch.u), dot(d, patch.w)};
     for (int t = 0; t < patch.count; ++t) {
       const auto& tri = patch.tri[t];
       const Vec2 a = patch.p[tri[0]], b = patch.p[tri[1]], e = patch.p[tri[2]];
@@ -85,10 +96,20 @@ void CarriedPoints::hand_over(uint32_t v, const Ring& ring, const Patch& patch,
     h = kNone;
   }
   if (patch.count == 0) return; // nothing stands for them any more: the triangle went
+  const Vec3 c = eval.position(v);
   for (uint32_t p = chain; p != kNone;) {
     const uint32_t after = next_[p];
-    int t = 0;
-    nearest2(eval.position(p), patch, -1.0, &t);
+    // The triangle it lies under along the plan's normal (the patch projects one-to-one
+    // there), else, beyond the ring, the nearest.
+    const Vec3 d = eval.position(p) - c;
+    const Vec2 s{dot(d, patch.u), dot(d, patch.w)};
+    int t = -1;
+    for (int k = 0; k < patch.count && t < 0; ++k) {
+      const auto& tri = patch.tri[k];
+      const Vec2 a = patch.p[tri[0]], b = patch.p[tri[1]], e = patch.p[tri[2]];
+      if (orient2d(a, b, s) >= 0 && orient2d(b, e, s) >= 0 && orient2d(e, a, s) >= 0) t = k;
+    }
+    if (t < 0) nearest2(eval.position(p), patch, -1.0, &t);
     uint32_t& h = head_[ring.f[t]];
     next_[p] = h;
     h = p;

@@ -31,7 +31,8 @@ class Result:
     # (k, 3) int64: for each output corner the input corner (3 * face + corner) whose
     # per-corner data (UVs, normals) it takes: same vertex, same side of every seam
     corner_source: np.ndarray
-    report: dict  # counts, "stop_reason" as text, "error_bound" (mesh units), warnings
+    report: dict  # counts, "stop_reason" as text, "error_bound" (mesh units; None unless tracked),
+    # "boundary_simplified", warnings
 
 
 def _array(a, what: str, kinds: str) -> np.ndarray:
