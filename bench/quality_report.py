@@ -223,8 +223,9 @@ def main():
         "# Error, targets and fold-overs over whole data sets",
         "",
         f"Measured {datetime.date.today()} on {os.cpu_count()} cores by `scripts/bench_quality.sh` "
-        f"(data: `bench/quality.csv`): {len(meshes)} meshes ({len(closed)} closed) of CGAL's data set "
-        "and assimp's test models with >= 200 faces, at " + ", ".join(f"{float(r):g}" for r in ratios_list) +
+        f"(data: `bench/quality.csv`): {len(meshes)} meshes ({len(closed)} closed) of CGAL's data set, "
+        "assimp's test models and the CAD set (parts modelled in build123d on OpenCASCADE and "
+        "exported to STL as CAD tools do, `bench/cad/make_parts.py`) with >= 200 faces, at " + ", ".join(f"{float(r):g}" for r in ratios_list) +
         " of the faces; symmetric Hausdorff distance sampled on both surfaces, relative to the "
         "bounding-box diagonal; one thread per run.",
         "",
