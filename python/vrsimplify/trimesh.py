@@ -29,18 +29,63 @@ def _visual(mesh: trimesh.Trimesh, r: Result):
     return None
 
 
-def simplify_trimesh(mesh: trimesh.Trimesh, **options) -> trimesh.Trimesh:
-    """Simplified copy of `mesh` (options as vrsimplify.simplify; the input is untouched).
+def _region_borders(mesh: trimesh.Trimesh) -> np.ndarray | None:
+    """Edges between faces of different face colour or face attribute, as (s, 2) vertex pairs:
+    kept as polylines, so that no region's colour (or label) bleeds into its neighbour's."""
+    labels = []
+    visual = mesh.visual
+    if visual is not None and visual.defined and visual.kind == "face":
+        labels.append(np.asarray(visual.face_colors).reshape(len(mesh.faces), -1))
+    for value in mesh.face_attributes.values():
+        value = np.asarray(value)
+        if len(value) == len(mesh.faces):
+            labels.append(value.reshape(len(mesh.faces), -1))
+    if not labels:
+        return None
+    key = np.concatenate([np.ascontiguousarray(l).view(np.uint8).reshape(len(mesh.faces), -1)
+                          for l in labels], axis=1)
+    pairs = mesh.face_adjacency  # (p, 2) faces sharing an edge
+    differ = np.any(key[pairs[:, 0]] != key[pairs[:, 1]], axis=1)
+    return np.asarray(mesh.face_adjacency_edges[differ], dtype=np.int64).reshape(-1, 2)
 
-    The result's ``metadata["vrsimplify"]`` holds the report and ``vertex_map``. trimesh splits
-    vertices along UV seams on load: those seams are borders to the core, kept unless
-    ``simplify_boundary=True``.
-    """
+
+def _simplify_one(mesh: trimesh.Trimesh, options: dict) -> trimesh.Trimesh:
+    seams = _region_borders(mesh)
+    if seams is not None and len(seams):
+        given = options.get("seams")
+        options = {**options, "seams": seams if given is None else np.concatenate(
+            [np.asarray(given, dtype=np.int64).reshape(-1, 2), seams])}
     r = simplify(mesh.vertices, mesh.faces, **options)
+    source = np.where(r.face_source >= 0, r.face_source, r.corner_source[:, 0] // 3)
     out = trimesh.Trimesh(vertices=r.vertices, faces=r.faces, process=False,
                           visual=_visual(mesh, r),
                           vertex_attributes={k: np.asarray(v)[r.vertex_map]
-                                             for k, v in mesh.vertex_attributes.items()})
+                                             for k, v in mesh.vertex_attributes.items()},
+                          face_attributes={k: np.asarray(v)[source]
+                                           for k, v in mesh.face_attributes.items()
+                                           if len(np.asarray(v)) == len(mesh.faces)})
     out.metadata.update(mesh.metadata)
     out.metadata["vrsimplify"] = {"report": r.report, "vertex_map": r.vertex_map}
     return out
+
+
+def simplify_trimesh(mesh, **options):
+    """Simplified copy of `mesh` (options as vrsimplify.simplify; the input is untouched).
+
+    A ``trimesh.Trimesh`` gives a ``Trimesh``; a ``trimesh.Scene`` (what ``trimesh.load``
+    returns for multi-part files) gives a ``Scene`` with each part simplified by the same
+    options and placed as before. The result's ``metadata["vrsimplify"]`` holds the report and
+    ``vertex_map``. Borders between faces of different face colour or face attribute are kept
+    as seams (a new face takes a colour from the region it lies in); ``face_attributes`` follow
+    their faces. trimesh splits vertices along UV seams on load: those seams stay.
+    """
+    if isinstance(mesh, trimesh.Scene):
+        scene = mesh.copy()
+        for name, geometry in list(scene.geometry.items()):
+            if isinstance(geometry, trimesh.Trimesh) and len(geometry.faces):
+                scene.geometry[name] = _simplify_one(geometry, options)
+        return scene
+    if not isinstance(mesh, trimesh.Trimesh):
+        raise TypeError(f"simplify_trimesh takes a trimesh.Trimesh or trimesh.Scene, not "
+                        f"{type(mesh).__name__}")
+    return _simplify_one(mesh, options)
