@@ -80,11 +80,12 @@ def simplify_trimesh(mesh, **options):
     their faces. trimesh splits vertices along UV seams on load: those seams stay.
     """
     if isinstance(mesh, trimesh.Scene):
-        scene = mesh.copy()
-        for name, geometry in list(scene.geometry.items()):
-            if isinstance(geometry, trimesh.Trimesh) and len(geometry.faces):
-                scene.geometry[name] = _simplify_one(geometry, options)
-        return scene
+        # A new scene over a copy of the same graph (Scene.copy() would copy every part first).
+        parts = {name: _simplify_one(g, options)
+                 if isinstance(g, trimesh.Trimesh) and len(g.faces) else g
+                 for name, g in mesh.geometry.items()}
+        return trimesh.Scene(parts, base_frame=mesh.graph.base_frame,
+                             metadata=dict(mesh.metadata), graph=mesh.graph.copy())
     if not isinstance(mesh, trimesh.Trimesh):
         raise TypeError(f"simplify_trimesh takes a trimesh.Trimesh or trimesh.Scene, not "
                         f"{type(mesh).__name__}")
