@@ -31,15 +31,6 @@ double nearest2(Vec3 x, const Patch& patch, double enough, int* which = nullptr)
 
 } // namespace
 
-double CarriedPoints::farthest2(const Ring& ring, const Patch& patch, const Evaluator& eval) const {
-  if (patch.count == 0) return 0; // a triangle cut off: its points leave with it
-  double worst = 0;
-  for (int i = 0; i < ring.faces; ++i)
-    for (uint32_t p = head_[ring.f[i]]; p != kNone; p = next_[p])
-      worst = std::max(worst, nearest2(eval.position(p), patch, worst));
-  return worst;
-}
-
 bool CarriedPoints::folds_input(uint32_t v, const Ring& ring, const Patch& patch,
                                 const Evaluator& eval, const float* cones) const {
   if (patch.count == 0) return false;

@@ -1,8 +1,8 @@
-// Error against the input, not only the last step: every removed vertex is carried by the face
-// of today's mesh that stands nearest it, so a removal's price can also ask how far the new
-// patch stands from every input vertex the old fan already stood for. A price that sees the
-// last step only lets error pile up where many steps each looked cheap (a smooth part emptied
-// into a few large triangles while rough parts keep their detail).
+// The input behind today's faces: every removed vertex is carried by the face of today's mesh
+// that stands nearest it, so a removal can be judged against the input the old fan stood for
+// (a fold-over against the input, not against faces that may already lean far from it).
+// Pricing by the farthest carried vertex too was measured: the same tail (p90 2.49 against
+// 2.37 without, p95 3.89 against 3.64) for 17 % more time; it is not done.
 #pragma once
 
 #include <cstdint>
@@ -21,10 +21,6 @@ class CarriedPoints {
     next_.assign(vertices, kNone);
   }
   bool active() const { return !head_.empty(); }
-
-  // Squared distance to the patch (as planned over `ring`) of the farthest point the ring's
-  // faces carry; 0 when they carry none. Reads only (the workers plan in parallel).
-  double farthest2(const Ring& ring, const Patch& patch, const Evaluator& eval) const;
 
   // After v's removal wrote the patch into the ring's face slots (new triangle i in slot
   // ring.f[i]): the old faces' points and v go to the new triangle nearest each. Touches only

@@ -123,7 +123,7 @@ double triangle_error2(const OldFan& fan, const Ring& ring, const Patch& patch, 
 }
 
 double patch_error(uint32_t v, const Ring& ring, const Patch& patch, const Evaluator& eval,
-                   double reference_area, double carried2) {
+                   double reference_area) {
   const int k = ring.verts;
   const Vec3 c = eval.position(v);
   const auto& q = patch.q; // as planned: positions, and their projections `p` on (u, w)
@@ -173,7 +173,7 @@ double patch_error(uint32_t v, const Ring& ring, const Patch& patch, const Evalu
     const double d = distance_to_segment(c, q[0], q[1]);
     to_new = d * d;
   }
-  return std::sqrt(std::max({worst, to_new, carried2})) * std::sqrt(area / reference_area);
+  return std::sqrt(std::max(worst, to_new)) * std::sqrt(area / reference_area);
 }
 
 double drop_height(uint32_t v, const Patch& patch, const Evaluator& eval) {

@@ -47,10 +47,8 @@ double triangle_error2(const OldFan& fan, const Ring& ring, const Patch& patch, 
 // weighted by sqrt(fan area / reference_area): the same offset over a wider patch moves more
 // surface. On the benchmark's 18 real cases the weight took the geometric mean of our mean
 // error over QECD's from 1.64 to 1.41 (exponents 0.25 and 0.75 measured worse).
-// `carried2`: the squared distance to the patch of the farthest input point the old faces
-// stand for (carried_points.h), 0 when not tracked.
 double patch_error(uint32_t v, const Ring& ring, const Patch& patch, const Evaluator& eval,
-                   double reference_area, double carried2 = 0);
+                   double reference_area);
 
 // How far v drops onto the planes of the patch's triangles, at most: an O(k) estimate of
 // patch_error's main term, used to rank the ways to fill one hole (same weight for all).

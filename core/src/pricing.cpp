@@ -50,8 +50,7 @@ void Simplifier::note(uint32_t v, const Priced& p) {
 
 double Simplifier::price(const void* self, uint32_t v, const Ring& ring, const Patch& patch) {
   const auto* s = static_cast<const Simplifier*>(self);
-  const double carried2 = s->carried_.active() ? s->carried_.farthest2(ring, patch, s->eval_) : 0;
-  const double local = patch_error(v, ring, patch, s->eval_, s->reference_area_, carried2);
+  const double local = patch_error(v, ring, patch, s->eval_, s->reference_area_);
   if (s->face_bound_.empty()) return local;
   // With a bound, what will stop the run is the bound: the removals that raise it least go
   // first (1-4 % fewer faces at the same bound on elephant, fandisk, armadillo).

@@ -122,8 +122,8 @@ class Simplifier {
   // Not before 16 removals (a few are no history to jump from), nor under an error bound (it
   // says itself how far a removal may go).
   bool jumps(double price) const {
-    return opt_.max_price_jump > 0 && opt_.priority == Priority::LocalError &&
-           rep_.removed >= 16 && !(opt_.max_error > 0 && std::isfinite(opt_.max_error)) &&
+    return opt_.max_price_jump > 0 && opt_.priority == Priority::LocalError && rep_.removed >= 16 &&
+           !(opt_.max_error > 0 && std::isfinite(opt_.max_error)) &&
            price > opt_.max_price_jump * std::max(rep_.max_removed_factor, jump_floor_);
   }
   bool simplify_boundary_ = opt_.simplify_boundary; // or on when the kept border needs it

@@ -124,12 +124,10 @@ struct Options {
   // prices them all at once (the paper's way, and always with Priority::Factor, whose price
   // is cheap). Lazy halves the work or better; a neighbour whose price fell waits in place.
   bool lazy_reevaluation = true;
-  // With Priority::LocalError: each removed vertex is carried by the face nearest it; a
-  // removal is also priced by how far its patch stands from every input vertex its old faces
-  // carry (error against the input, not only the last step: error does not pile up where many
-  // steps each looked cheap), and refused where a new triangle would face against the input
-  // normal at a vertex it carries (a fold-over judged against the input, not against faces
-  // that may already lean far from it). Costs 8 bytes a vertex and 4 a face.
+  // With Priority::LocalError: each removed vertex is carried by the face nearest it, and a
+  // removal is refused where a new triangle would face against the input's normal at a vertex
+  // it carries (a fold-over judged against the input, not against faces that may already lean
+  // far from it). Costs 4 bytes a vertex and a face, and about an eighth more time.
   bool against_input = true;
   // With Priority::LocalError and a count target: when the cheapest removal left would cost
   // more than this many times the dearest one made so far (and more than 1e-3 of the
