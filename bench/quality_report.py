@@ -99,17 +99,22 @@ def fmt(pair):
     return f"{pair[0]:.3f} / {pair[1]:.3f}"
 
 
+def folds_of(runs, keys, method):
+    """The runs where `method` and QECD both ran, with their fold-over areas (method's, QECD's)."""
+    have = [k for k in keys if row_of(runs[k], method) is not None and "qecd" in runs[k]]
+    return (have, [float(row_of(runs[k], method)["fold_area"] or 0) for k in have],
+            [float(runs[k]["qecd"]["fold_area"] or 0) for k in have])
+
+
 def summary_rows(runs, keys, methods):
     lines = [
         "| method | runs | mean err ÷ QECD (median / clamped gmean) | max err ÷ QECD (median / clamped gmean) | off target | fold area % (QECD) |",
         "|---|---|---|---|---|---|",
     ]
     for method, label in methods:
-        have = [k for k in keys if row_of(runs[k], method) is not None and "qecd" in runs[k]]
+        have, folds, qfolds = folds_of(runs, keys, method)
         if not have:
             continue
-        folds = [float(row_of(runs[k], method)["fold_area"] or 0) for k in have]
-        qfolds = [float(runs[k]["qecd"]["fold_area"] or 0) for k in have]
         miss = sum(off(row_of(runs[k], method)) for k in have)
         lines.append(
             f"| {method} ({label}) | {len(have)} | {fmt(stats(ratios(runs, have, method, 'error_mean')))} | "
@@ -189,11 +194,9 @@ def fold_rows(runs, keys, methods):
     """Fold-over area against QECD's: mean share, and runs folded > 1 % where QECD's is < 1 %."""
     lines = ["| method | runs | fold area % (QECD) | runs > 1 % folded where QECD < 1 % |", "|---|---|---|---|"]
     for method, _ in methods:
-        have = [k for k in keys if row_of(runs[k], method) is not None and "qecd" in runs[k]]
+        have, f, q = folds_of(runs, keys, method)
         if not have:
             continue
-        f = [float(row_of(runs[k], method)["fold_area"] or 0) for k in have]
-        q = [float(runs[k]["qecd"]["fold_area"] or 0) for k in have]
         worse = sum(a > 0.01 and b < 0.01 for a, b in zip(f, q))
         lines.append(f"| {method} | {len(have)} | {100 * sum(f) / len(f):.2f} ({100 * sum(q) / len(q):.2f}) | {worse} |")
     return lines

@@ -29,6 +29,17 @@ double nearest2(Vec3 x, const Patch& patch, double enough, int* which = nullptr)
   return best;
 }
 
+// The new triangle whose projection on the plan's plane holds s (relative to the removed
+// vertex), or -1 when s lies outside the patch.
+int triangle_under(const Patch& patch, Vec2 s) {
+  for (int t = 0; t < patch.count; ++t) {
+    const auto& tri = patch.tri[t];
+    const Vec2 a = patch.p[tri[0]], b = patch.p[tri[1]], e = patch.p[tri[2]];
+    if (orient2d(a, b, s) >= 0 && orient2d(b, e, s) >= 0 && orient2d(e, a, s) >= 0) return t;
+  }
+  return -1;
+}
+
 } // namespace
 
 bool CarriedPoints::folds_input(uint32_t v, const Ring& ring, const Patch& patch,
@@ -56,13 +67,8 @@ bool CarriedPoints::folds_input(uint32_t v, const Ring& ring, const Patch& patch
       return false;
     const Vec3 d = eval.position(p) - c;
     const Vec2 s{dot(d, patch.u), dot(d, patch.w)};
-    for (int t = 0; t < patch.count; ++t) {
-      const auto& tri = patch.tri[t];
-      const Vec2 a = patch.p[tri[0]], b = patch.p[tri[1]], e = patch.p[tri[2]];
-      if (orient2d(a, b, s) >= 0 && orient2d(b, e, s) >= 0 && orient2d(e, a, s) >= 0)
-        return !(dot(n[t], axis) > -cone[3]);
-    }
-    return false; // projects outside the patch: another removal's business
+    const int t = triangle_under(patch, s);
+    return t >= 0 && !(dot(n[t], axis) > -cone[3]); // outside: another removal's business
   };
   if (folds_at(v)) return true;
   for (int i = 0; i < ring.faces; ++i)
@@ -94,12 +100,7 @@ void CarriedPoints::hand_over(uint32_t v, const Ring& ring, const Patch& patch,
     // there), else, beyond the ring, the nearest.
     const Vec3 d = eval.position(p) - c;
     const Vec2 s{dot(d, patch.u), dot(d, patch.w)};
-    int t = -1;
-    for (int k = 0; k < patch.count && t < 0; ++k) {
-      const auto& tri = patch.tri[k];
-      const Vec2 a = patch.p[tri[0]], b = patch.p[tri[1]], e = patch.p[tri[2]];
-      if (orient2d(a, b, s) >= 0 && orient2d(b, e, s) >= 0 && orient2d(e, a, s) >= 0) t = k;
-    }
+    int t = triangle_under(patch, s);
     if (t < 0) nearest2(eval.position(p), patch, -1.0, &t);
     uint32_t& h = head_[ring.f[t]];
     next_[p] = h;

@@ -10,12 +10,9 @@ template <class Queue> bool Simplifier::relax(Queue& queue, bool after_jump) {
   // Nothing to gain when the kept border alone needs more than the target: on the input's
   // surface (Euler, manifold), any triangulation keeping its B border vertices has at least
   // 2B - 2V + F faces. Lifting vetoes there would only crumple the interior.
-  if (!simplify_boundary_ && rep_.kept_boundary) {
-    const long b = long(rep_.kept_boundary), v = long(vertices_ + rep_.removed), f = long(faces0_);
-    if ((target_faces_ && 2 * b - 2 * v + f > long(target_faces_)) ||
-        (target_vertices_ && b > long(target_vertices_)))
-      return false;
-  }
+  if (!simplify_boundary_ && rep_.kept_boundary &&
+      border_takes(rep_.kept_boundary, vertices_ + rep_.removed, 1.0))
+    return false;
   // First step (when most of the queue's rest is refused by a corner's input normal, at a
   // price jump, or when the queue runs dry): a new triangle may face away from the input's
   // normal at one of its three corners. Thin parts, threads and tunnels are where every

@@ -44,9 +44,13 @@ bool Simplifier::border_needs_simplifying() const {
   // at least (Euler). Past a quarter of the target, the interior is all that is left to spend
   // (open meshes: p95 of the mean-error ratio to QECD 8.1 -> 3.7; a half or the whole target
   // as the threshold did less, 3.7 and 7.3).
+  return border_takes(border, used, 0.25);
+}
+
+bool Simplifier::border_takes(size_t border, size_t used, double share) const {
   const double least = 2.0 * double(border) - 2.0 * double(used) + double(faces0_);
-  return (target_faces_ && least > 0.25 * double(target_faces_)) ||
-         (target_vertices_ && double(border) > 0.25 * double(target_vertices_));
+  return (target_faces_ && least > share * double(target_faces_)) ||
+         (target_vertices_ && double(border) > share * double(target_vertices_));
 }
 
 void Simplifier::lock_split_seams() {

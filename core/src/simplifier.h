@@ -39,6 +39,9 @@ class Simplifier {
   // Options::simplify_boundary_when_needed: whether the kept border would take more than a
   // quarter of the count target (setup.cpp).
   bool border_needs_simplifying() const;
+  // Whether keeping `border` vertices of a surface of `used` vertices and the input's faces
+  // would take more than `share` of the count target (at least 2B - 2V + F faces, Euler).
+  bool border_takes(size_t border, size_t used, double share) const;
   // Then the border vertices at another border vertex's exact position (a seam of split
   // vertices) stay: kFlagTwin.
   void lock_split_seams();
