@@ -16,8 +16,10 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (!f) return 0;
   uint64_t vertices = 0, triangles = 0;
   vrs::tiled::StreamSink sink;
-  sink.vertex = [&](const float*) { ++vertices; };
-  sink.triangle = [&](const int64_t*) { ++triangles; };
+  sink.vertex = [&](const double*) { ++vertices; };
+  sink.triangle = [&](const int64_t*, const vrs::tiled::CornerKeys&) { ++triangles; };
+  sink.raw_vertex = [](const char*, size_t) {};
+  sink.other_line = [](const std::string&) {};
   const std::string error = vrs::tiled::read_mesh_stream(f, name, sink);
   std::fclose(f);
   // A polygon of k corners makes k - 2 triangles: never more triangles than bytes read.

@@ -337,11 +337,8 @@ int main(int argc, char** argv) {
       if (!not_tiled.empty())
         return usage_error("tiled runs (--memory, --scheduler) do not take " + not_tiled +
                            " yet; without --memory the run is in core");
-      const std::string ext = out.size() >= 4 ? out.substr(out.size() - 4) : "";
-      if (ext != ".ply" && ext != ".PLY" && ext != ".obj" && ext != ".OBJ")
-        return usage_error("tiled runs (--memory, --scheduler) write .ply (binary) or .obj only, "
-                           "not " +
-                           out);
+      const std::string refusal = vrs::tiled::output_refusal(in, out);
+      if (!refusal.empty()) return usage_error(refusal);
       tiled.input = in, tiled.output = out, tiled.ratio = opt.target.ratio;
       tiled.json = json;
       tiled.progress = progress == 1 || (progress == -1 && isatty(STDERR_FILENO));

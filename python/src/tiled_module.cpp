@@ -84,6 +84,7 @@ void register_tiled(nb::module_& m) {
   });
   m.def("tiled_discard", [](const std::string& workdir) { vrs::tiled::discard(workdir); });
   m.def("tiled_faces_for_memory", &vrs::tiled::faces_for_memory);
+  m.def("tiled_output_refusal", &vrs::tiled::output_refusal);
   m.def("tiled_fits_in_core", &vrs::tiled::fits_in_core);
   m.def("tiled_parse_memory", &vrs::tiled::parse_memory);
   m.attr("tiles_in_memory") = vrs::tiled::kTilesInMemory;

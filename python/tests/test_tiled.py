@@ -123,17 +123,13 @@ def test_a_named_work_directory_keeps_what_it_held(big, tmp_path):
 
 def test_one_worker_or_two_the_same_output(big, tmp_path):
     src, v, f = big
-    one, two = tmp_path / "one.ply", tmp_path / "two.obj"
+    one, two = tmp_path / "one.ply", tmp_path / "two.ply"
     r1 = vrsimplify.tiled.simplify(src, one, ratio=0.01, memory="64M", workers=1)
     r2 = vrsimplify.tiled.simplify(src, two, ratio=0.01, memory="64M", workers=0)  # the cores
     assert r1["output_faces"] == r2["output_faces"] and r1["target_reached"] in (True, False)
     assert r1["stop_reason"] == ("target_reached" if r1["target_reached"] else "no_candidates")
     check_output(one, v, f, 0.01)
-    v1, f1 = read_ply(one)
-    lines = two.read_text().split("\n")
-    v2 = np.array([[float(x) for x in l.split()[1:]] for l in lines if l.startswith("v ")])
-    f2 = np.array([[int(x) - 1 for x in l.split()[1:]] for l in lines if l.startswith("f ")])
-    assert np.array_equal(v1, v2.astype(np.float32)) and np.array_equal(f1, f2)
+    assert one.read_bytes() == two.read_bytes()
 
 
 def test_ctrl_c_stops_the_workers_and_leaves_nothing(big, tmp_path):
@@ -177,7 +173,7 @@ def test_bad_input_is_a_clear_error_and_leaves_nothing(big, tmp_path):
     for name, content in cases.items():
         path = tmp_path / name
         path.write_bytes(content)
-        out = tmp_path / f"{name}.out.ply"
+        out = tmp_path / f"out-{name}"  # the input's format: what a tiled run writes
         with pytest.raises(ValueError, match=messages[name]):
             vrsimplify.tiled.simplify(path, out, ratio=0.1, memory="64M")
         assert not out.exists() and not list(tmp_path.glob("vrsimplify-tiles-*"))
@@ -189,8 +185,86 @@ def test_bad_input_is_a_clear_error_and_leaves_nothing(big, tmp_path):
                                   workdir=str(blocked / "sub"))
     with pytest.raises(ValueError, match="memory"):
         vrsimplify.tiled.simplify(src, tmp_path / "o.ply", ratio=0.1, memory="lots")
-    # An output format the tiled writer does not have is refused before any work.
-    for name in ("o.off", "o.stl"):
-        with pytest.raises(ValueError, match=r"\.ply \(binary\) or \.obj only"):
+    # A tiled run writes the input's own format (every attribute passes untouched): another is
+    # refused before any work.
+    for name in ("o.off", "o.stl", "o.obj"):
+        with pytest.raises(ValueError, match=r"name the output \.ply"):
             vrsimplify.tiled.simplify(src, tmp_path / name, ratio=0.1, memory="64M")
         assert not (tmp_path / name).exists() and not list(tmp_path.glob("vrsimplify-tiles-*"))
+
+
+def textured_obj(path):
+    """An OBJ with everything a scan or a photogrammetry mesh carries: vertex colors on the v
+    lines, a normal per vertex, texture charts (one vt per vertex and chart, its value naming
+    both) and two materials. Returns the input's corners as (v line, vt line, vn line,
+    material) and its v lines."""
+    m = trimesh.creation.icosphere(subdivisions=5)  # 20 480 faces
+    v, f = np.asarray(m.vertices), np.asarray(m.faces)
+    centroid = v[f].mean(axis=1)
+    chart = (centroid[:, 0] > 0) * 2 + (centroid[:, 1] > 0)
+    lines = ["mtllib scan.mtl"]
+    vlines = [f"v {x:.9g} {y:.9g} {z:.9g} {i % 7 / 7:.4f} 0.5 {i % 3 / 3:.4f}"
+              for i, (x, y, z) in enumerate(v)]
+    vnlines = ["vn %.6f %.6f %.6f" % tuple(p) for p in v]
+    lines += vlines + vnlines
+    vt, corners = {}, set()
+    for t, face in enumerate(f):
+        for c in face:
+            if (c, chart[t]) not in vt:
+                vt[(c, chart[t])] = len(vt) + 1
+                lines.append(f"vt {c / len(v):.9g} {chart[t]}")
+    vtlines = {i: f"vt {c / len(v):.9g} {ch}" for (c, ch), i in vt.items()}
+    for mat in (0, 1):
+        lines.append(f"usemtl side{mat}")
+        for t, face in enumerate(f):
+            if chart[t] // 2 != mat:
+                continue
+            lines.append("f " + " ".join(f"{c + 1}/{vt[(c, chart[t])]}/{c + 1}" for c in face))
+            corners |= {(vlines[c], vtlines[vt[(c, chart[t])]], vnlines[c], f"side{mat}")
+                        for c in face}
+    path.write_text("\n".join(lines) + "\n")
+    (path.parent / "scan.mtl").write_text("newmtl side0\nKd 1 0 0\nnewmtl side1\nKd 0 0 1\n")
+    return corners, set(vlines), len(f)
+
+
+def obj_corners(path):
+    v, vt, vn, corners, material = [], [], [], [], None
+    for line in path.read_text().splitlines():
+        word = line.split(" ", 1)[0]
+        if word == "v":
+            v.append(line)
+        elif word == "vt":
+            vt.append(line)
+        elif word == "vn":
+            vn.append(line)
+        elif word == "usemtl":
+            material = line.split(" ", 1)[1]
+        elif word == "f":
+            for corner in line.split()[1:]:
+                a, b, c = (int(i) - 1 for i in corner.split("/"))
+                corners.append((v[a], vt[b], vn[c], material))
+    return corners, v
+
+
+def test_tiled_runs_keep_every_attribute_locally_and_on_dask(tmp_path):
+    """Vertex colors, normals, texture charts and materials through tiles, on local processes
+    and on a real Dask cluster: every output vertex is an input v line as written, every output
+    corner an input corner of its chart and material, the same bytes either way."""
+    distributed = pytest.importorskip("distributed")
+    src = tmp_path / "in" / "scan.obj"
+    src.parent.mkdir()
+    corners, vlines, faces = textured_obj(src)
+    local = tmp_path / "local.obj"
+    r = vrsimplify.tiled.simplify(src, local, ratio=0.1, memory="1M", workers=2)
+    assert r["levels"][0]["tiles"] > 4 and r["output_faces"] <= 0.1 * faces * 1.005 + 2
+    with distributed.LocalCluster(n_workers=2, threads_per_worker=1, processes=True,
+                                  dashboard_address=None) as cluster, \
+            distributed.Client(cluster) as client:
+        on_dask = tmp_path / "dask.obj"
+        vrsimplify.tiled.simplify(src, on_dask, ratio=0.1, memory="1M", client=client)
+    assert local.read_bytes() == on_dask.read_bytes()
+    out_corners, out_v = obj_corners(local)
+    assert set(out_v) <= vlines
+    assert len(out_corners) == 3 * r["output_faces"]
+    assert [c for c in out_corners if c not in corners] == []
+    assert "mtllib in/scan.mtl" in local.read_text()  # named from the output's folder

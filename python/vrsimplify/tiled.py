@@ -8,11 +8,13 @@
     vrsimplify.tiled.simplify("scan.ply", "scan-1.ply", ratio=0.01, memory="2G",
                               client=Client("tcp://scheduler:8786"), workdir="/shared/tiles")
 
-The input (.ply ascii or binary, .obj) is streamed once into the work directory and cut into
-spatial tiles; each tile is a task that simplifies it with its border locked; further levels
-over shifted tiles release the borders until the target is met; the output (.ply binary or
-.obj, positions only) joins the tiles by input vertex id and is the same whoever ran the
-tiles. Command line: ``python -m vrsimplify.tiled IN OUT --ratio R [--scheduler ADDRESS]
+The input (.ply ascii or binary, .obj, ascii .off) is streamed once into the work directory
+and cut into spatial tiles; each tile is a task that simplifies it with its border locked and
+its seams (texture, normal, material borders) kept; further levels over shifted tiles release
+the borders until the target is met; the output, in the input's own format, joins the tiles by
+input vertex id — each vertex copied as the input holds it (every property, in its own
+precision), each corner with its input corner's vt/vn/texcoord — and is the same whoever ran
+the tiles. Command line: ``python -m vrsimplify.tiled IN OUT --ratio R [--scheduler ADDRESS]
 [--memory 2G] [--work-dir DIR]`` (what ``vrsimplify --scheduler`` runs).
 """
 from __future__ import annotations
@@ -61,8 +63,9 @@ def simplify(src: Union[str, os.PathLike], dst: Union[str, os.PathLike], *, rati
     an unwritable work directory) and leaves no output file behind.
     """
     src, dst = os.fspath(src), os.fspath(dst)
-    if not dst.lower().endswith((".ply", ".obj")):  # before any work: never a PLY in a .off
-        raise ValueError(f"tiled runs write .ply (binary) or .obj only, not {dst}")
+    refusal = _core.tiled_output_refusal(src, dst)  # before any work: never a PLY in a .off
+    if refusal:
+        raise ValueError(refusal)
     budget = memory if isinstance(memory, int) else _core.tiled_parse_memory(str(memory))
     if not budget:
         raise ValueError(f"memory must be a size such as 512M or 2G, got {memory!r}")

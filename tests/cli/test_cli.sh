@@ -171,17 +171,17 @@ awk 'NR == 2 { nv = $1 } NR > 2 + nv && NF == 4 && (++f % 3 == 0) { print $1, $2
 
 # 8. Tiled runs (--memory): a budget the mesh does not fit goes tiled, one it fits stays in core;
 #    a budget that is not a size is a bad call.
-"$bin" "$in" "$out/tiled.ply" --ratio 0.1 --memory 1M --json >"$out/tiled.json" 2>"$out/err" &&
+"$bin" "$in" "$out/tiled.off" --ratio 0.1 --memory 1M --json >"$out/tiled.json" 2>"$out/err" &&
   grep -q '"tiled":true' "$out/tiled.json" && [ "$(json_num "$out/tiled.json" output_faces)" -le 1301 ] &&
-  [ -s "$out/tiled.ply" ] && [ -z "$(ls -d "$out"/vrsimplify-tiles-* 2>/dev/null)" ] && ok ||
+  [ -s "$out/tiled.off" ] && [ -z "$(ls -d "$out"/vrsimplify-tiles-* 2>/dev/null)" ] && ok ||
   fail "--memory 1M: $(cat "$out/tiled.json" "$out/err")"
 # A --work-dir the user names gets a fresh folder inside, removed after: the folder and what
 # it held stay.
 mkdir -p "$out/scratch" && echo mine >"$out/scratch/keep.txt"
-"$bin" "$in" "$out/tiled2.ply" --ratio 0.1 --memory 1M --work-dir "$out/scratch" --quiet >/dev/null 2>"$out/err" &&
-  cmp -s "$out/tiled.ply" "$out/tiled2.ply" && [ "$(cat "$out/scratch/keep.txt")" = mine ] &&
+"$bin" "$in" "$out/tiled2.off" --ratio 0.1 --memory 1M --work-dir "$out/scratch" --quiet >/dev/null 2>"$out/err" &&
+  cmp -s "$out/tiled.off" "$out/tiled2.off" && [ "$(cat "$out/scratch/keep.txt")" = mine ] &&
   [ "$(ls "$out/scratch")" = keep.txt ] && ok || fail "--work-dir: $(cat "$out/err"; ls "$out/scratch")"
-"$bin" "$out/tiled.ply" "$out/back.ply" --ratio 1 --json >"$out/back.json" 2>>"$out/err" &&
+"$bin" "$out/tiled.off" "$out/back.off" --ratio 1 --json >"$out/back.json" 2>>"$out/err" &&
   [ "$(json_num "$out/back.json" input_faces)" = "$(json_num "$out/tiled.json" output_faces)" ] && ok ||
   fail "the tiled output does not read back"
 "$bin" "$in" "$out/incore.ply" --ratio 0.1 --memory 2G --json >"$out/incore.json" 2>"$out/err" &&
@@ -189,11 +189,12 @@ mkdir -p "$out/scratch" && echo mine >"$out/scratch/keep.txt"
 "$bin" "$in" "$out/x.ply" --memory lots 2>"$out/err"; [ $? -eq 2 ] && grep -q "memory needs a size" "$out/err" && ok ||
   fail "--memory lots: $(cat "$out/err")"
 # The tiled path honours what it is given or refuses it by name, before any work; it writes
-# .ply only; its JSON says whether the target was met, with the in-core report's keys.
+# the input's own format; its JSON says whether the target was met, with the in-core report's
+# keys.
 expect_exit 2 "do not take --mode" "$bin" "$in" "$out/never.ply" --ratio 0.1 --memory 1M --mode terrain
 expect_exit 2 "do not take --ascii" "$bin" "$in" "$out/never.ply" --ratio 0.1 --memory 1M --ascii
-expect_exit 2 "write .ply (binary) or .obj only" "$bin" "$in" "$out/never.off" --ratio 0.1 --memory 1M
-[ ! -e "$out/never.off" ] && ok || fail "a tiled run wrote into an .off"
+expect_exit 2 "writes the input's own format" "$bin" "$in" "$out/never.ply" --ratio 0.1 --memory 1M
+[ ! -e "$out/never.ply" ] && ok || fail "a tiled run wrote another format than its input's"
 grep -q '"stop_reason":"target_reached","target_reached":true' "$out/tiled.json" && ok ||
   fail "tiled JSON without stop_reason/target_reached: $(cat "$out/tiled.json")"
 "$bin" "$in" "$out/x.ply" --faces 100 --memory 1M 2>"$out/err"; [ $? -eq 2 ] && grep -q "take --ratio only" "$out/err" && ok ||

@@ -5,6 +5,7 @@
 # indices), and assimp's real textured OBJ files. The check is first shown to fail on a
 # corrupted output, so a pass means something.
 #   test_textured.sh cli VRSIMPLIFY PYTHON CGAL_DATA OUT_DIR
+#   test_textured.sh tiled VRSIMPLIFY PYTHON CGAL_DATA OUT_DIR   (--memory 1M: ~200 tiles)
 #   test_textured.sh meshlabserver REPO_ROOT PYTHON CGAL_DATA OUT_DIR   (MeshLab 2020.09)
 set -u
 mode=$1 tool=$2 python=$3 cgal=$4 out=$(realpath -m "$5")
@@ -22,6 +23,11 @@ case "$mode" in
     inputs+=(/usr/share/assimp/models/OBJ/regr01.obj /usr/share/assimp/models/OBJ/spider.obj)
     simplify() { "$tool" "$1" "$2" --ratio "$3" --json >"$2.json"; }
     ;;
+  tiled)
+    simplify() {
+      "$tool" "$1" "$2" --ratio "$3" --memory 1M --json >"$2.json" && grep -q '"tiled":true' "$2.json"
+    }
+    ;;
   meshlabserver)
     # MeshLab 2020.09's own OBJ reader aborts on OBJ files with texture coordinates (an
     # assertion in vcglib's importer): only the PLY goes through it.
@@ -34,7 +40,7 @@ case "$mode" in
         "$ml/meshlabserver" -i "$1" -o "$2" -m wt -s "$out/run.mlx" >"$2.log" 2>&1)
     }
     ;;
-  *) echo "usage: test_textured.sh cli|meshlabserver ..."; exit 2 ;;
+  *) echo "usage: test_textured.sh cli|tiled|meshlabserver ..."; exit 2 ;;
 esac
 
 for input in "${inputs[@]}"; do

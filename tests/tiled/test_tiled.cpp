@@ -32,8 +32,13 @@ Read read_bytes(const std::string& bytes, const std::string& name) {
   Read r;
   std::FILE* f = fmemopen(const_cast<char*>(bytes.data()), bytes.size(), "rb");
   vrs::tiled::StreamSink sink;
-  sink.vertex = [&](const float p[3]) { r.v.insert(r.v.end(), p, p + 3); };
-  sink.triangle = [&](const int64_t t[3]) { r.t.insert(r.t.end(), t, t + 3); };
+  sink.vertex = [&](const double p[3]) {
+    for (int a = 0; a < 3; ++a)
+      r.v.push_back(float(p[a]));
+  };
+  sink.triangle = [&](const int64_t t[3], const vrs::tiled::CornerKeys&) {
+    r.t.insert(r.t.end(), t, t + 3);
+  };
   r.error = vrs::tiled::read_mesh_stream(f, name, sink);
   std::fclose(f);
   return r;
@@ -210,7 +215,7 @@ TEST(Tiled, BadInputAndWorkDirectoriesAreClearErrorsAndLeaveNothing) {
             std::string::npos);
   std::ofstream(dir + "/nan.obj")
       << "v 0 0 0\nv 1 0 0\nv nan 1 0\nv 0 0 1\nf 1 2 3\nf 1 3 4\nf 1 4 2\nf 2 4 3\n";
-  EXPECT_EQ(run(dir + "/nan.obj", dir + "/nan.ply", 0.5, 1 << 30, 1), ""); // kept, valid
+  EXPECT_EQ(run(dir + "/nan.obj", dir + "/nan.obj.out.obj", 0.5, 1 << 30, 1), ""); // kept, valid
   EXPECT_NE(run(dir + "/missing.ply", dir + "/o.ply", 0.5, 1 << 30, 1).find("cannot read"),
             std::string::npos);
   std::ofstream(dir + "/file") << "x";
@@ -240,6 +245,238 @@ TEST(Tiled, AWorkDirectoryIsAFreshFolderInTheOneNamedAndOnlyItIsRemoved) {
   EXPECT_EQ(text, "keep me");
   const std::string made = vrs::tiled::make_work_dir(dir + "/new"); // a missing parent is made
   EXPECT_EQ(made.rfind(dir + "/new/vrsimplify-tiles-", 0), 0u);
+  vrs::tiled::discard(dir);
+}
+
+namespace {
+
+// The lines of a text file from the first that starts with `from`.
+std::vector<std::string> lines_of(const std::string& text) {
+  std::vector<std::string> out;
+  std::istringstream in(text);
+  for (std::string line; std::getline(in, line);)
+    out.push_back(line);
+  return out;
+}
+
+// A PLY's header lines and the bytes after it.
+std::pair<std::vector<std::string>, std::string> ply_parts(const std::string& data) {
+  const size_t end = data.find("end_header\n") + 11;
+  return {lines_of(data.substr(0, end)), data.substr(end)};
+}
+
+} // namespace
+
+// Every property of every vertex passes bit for bit, in the input's own encoding: double
+// coordinates stay double, colors, normals and quality stay, whatever the byte order.
+TEST(Tiled, EveryVertexPropertyPassesBitForBitInEveryEncoding) {
+  const std::string dir = temp_dir();
+  const vrs::Mesh m = vrs_test::icosphere(5); // 20 480 faces
+  for (const char* format : {"binary_little_endian", "binary_big_endian", "ascii"}) {
+    const bool ascii = std::string(format) == "ascii",
+               big = std::string(format) == "binary_big_endian";
+    std::string data = std::string("ply\nformat ") + format + " 1.0\nelement vertex " +
+                       std::to_string(m.vertex_count()) +
+                       "\nproperty double x\nproperty double y\nproperty double z\n"
+                       "property float nx\nproperty float ny\nproperty float nz\n"
+                       "property uchar red\nproperty uchar green\nproperty uchar blue\n"
+                       "property float quality\nelement face " +
+                       std::to_string(m.face_count()) +
+                       "\nproperty list uchar int vertex_indices\nend_header\n";
+    std::vector<std::string> records; // each vertex as written
+    for (size_t v = 0; v < m.vertex_count(); ++v) {
+      // Coordinates a float cannot hold (a survey's magnitudes with sub-millimetre digits).
+      const double xyz[3] = {500000.123456789 + m.positions[3 * v],
+                             4100000.987654321 + m.positions[3 * v + 1],
+                             m.positions[3 * v + 2] + 1e-9 * double(v)};
+      const uint8_t rgb[3] = {uint8_t(v), uint8_t(v * 7), uint8_t(v * 13)};
+      std::string r;
+      if (ascii) {
+        char b[256];
+        std::snprintf(b, sizeof b, "%.17g %.17g %.17g %.9g %.9g %.9g %u %u %u %.9g", xyz[0], xyz[1],
+                      xyz[2], double(m.positions[3 * v]), double(m.positions[3 * v + 1]),
+                      double(m.positions[3 * v + 2]), rgb[0], rgb[1], rgb[2], 0.25 * double(v));
+        r = b;
+        data += r + "\n";
+      } else {
+        for (double c : xyz)
+          r += bytes_of(c, big);
+        for (int a = 0; a < 3; ++a)
+          r += bytes_of(m.positions[3 * v + a], big);
+        r += std::string(reinterpret_cast<const char*>(rgb), 3) +
+             bytes_of(float(0.25 * double(v)), big);
+        data += r;
+      }
+      records.push_back(r);
+    }
+    for (size_t t = 0; t < m.face_count(); ++t) {
+      if (ascii) {
+        data += "3 " + std::to_string(m.triangles[3 * t]) + " " +
+                std::to_string(m.triangles[3 * t + 1]) + " " +
+                std::to_string(m.triangles[3 * t + 2]) + "\n";
+        continue;
+      }
+      data += '\x03';
+      for (int c = 0; c < 3; ++c)
+        data += bytes_of(int32_t(m.triangles[3 * t + c]), big);
+    }
+    std::ofstream(dir + "/in.ply", std::ios::binary) << data;
+    ASSERT_EQ(run(dir + "/in.ply", dir + "/out.ply", 0.1, 1000000, 2), "") << format; // many tiles
+    const auto [in_header, in_body] = ply_parts(data);
+    const auto [out_header, out_body] = ply_parts(slurp(dir + "/out.ply"));
+    // The same vertex element, the counts aside.
+    std::vector<std::string> in_props, out_props;
+    for (const std::string& l : in_header)
+      if (l.rfind("property", 0) == 0 || l.rfind("format", 0) == 0) in_props.push_back(l);
+    for (const std::string& l : out_header)
+      if (l.rfind("property", 0) == 0 || l.rfind("format", 0) == 0) out_props.push_back(l);
+    EXPECT_EQ(in_props, out_props) << format;
+    unsigned long long nv = 0, nf = 0;
+    for (const std::string& l : out_header) {
+      std::sscanf(l.c_str(), "element vertex %llu", &nv);
+      std::sscanf(l.c_str(), "element face %llu", &nf);
+    }
+    EXPECT_LE(nf, size_t(0.1 * double(m.face_count()) * 1.005 + 2)) << format;
+    EXPECT_GE(nf, size_t(0.1 * double(m.face_count()) * 0.9)) << format;
+    const std::set<std::string> inputs(records.begin(), records.end());
+    size_t exact = 0;
+    if (ascii) {
+      const std::vector<std::string> lines = lines_of(out_body);
+      ASSERT_EQ(lines.size(), nv + nf) << format;
+      for (size_t v = 0; v < nv; ++v)
+        exact += inputs.count(lines[v]);
+    } else {
+      ASSERT_EQ(out_body.size(), nv * 43 + nf * 13) << format;
+      for (size_t v = 0; v < nv; ++v)
+        exact += inputs.count(out_body.substr(43 * v, 43));
+    }
+    EXPECT_EQ(exact, nv) << format << ": every output vertex is an input vertex, every bit";
+  }
+  vrs::tiled::discard(dir);
+}
+
+// Per-corner data stays with its chart: each output corner is an input corner (its v, vt and
+// vn lines and its material), seams kept inside tiles as in core; the material library is
+// named from the output's folder.
+TEST(Tiled, CornerDataAndMaterialsStayWithTheirChart) {
+  const std::string dir = temp_dir();
+  const vrs::Mesh m = vrs_test::icosphere(5);
+  std::ostringstream obj;
+  obj << "mtllib in.mtl\n";
+  for (size_t v = 0; v < m.vertex_count(); ++v)
+    obj << "v " << m.positions[3 * v] << " " << m.positions[3 * v + 1] << " "
+        << m.positions[3 * v + 2] << "\nvn " << m.positions[3 * v] << " " << m.positions[3 * v + 1]
+        << " " << m.positions[3 * v + 2] << "\n";
+  // Four charts by the sign of the centroid's x and y, two materials by the sign of x; one vt
+  // per (vertex, chart), its value naming both.
+  std::map<std::pair<uint32_t, int>, size_t> vt;
+  std::vector<int> chart(m.face_count());
+  for (size_t t = 0; t < m.face_count(); ++t) {
+    float cx = 0, cy = 0;
+    for (int c = 0; c < 3; ++c)
+      cx += m.positions[3 * m.triangles[3 * t + c]],
+          cy += m.positions[3 * m.triangles[3 * t + c] + 1];
+    chart[t] = (cx > 0) * 2 + (cy > 0);
+    for (int c = 0; c < 3; ++c) {
+      const uint32_t v = m.triangles[3 * t + c];
+      if (vt.emplace(std::make_pair(v, chart[t]), vt.size() + 1).second)
+        obj << "vt " << v << " " << chart[t] << "\n";
+    }
+  }
+  std::set<std::vector<std::string>> corners; // (v line, vt line, vn line, material)
+  std::vector<std::string> vlines, vnlines, vtlines(vt.size() + 1);
+  for (const auto& [key, i] : vt)
+    vtlines[i] = "vt " + std::to_string(key.first) + " " + std::to_string(key.second);
+  for (int mat : {0, 1}) {
+    obj << "usemtl side" << mat << "\n";
+    for (size_t t = 0; t < m.face_count(); ++t) {
+      if (chart[t] / 2 != mat) continue;
+      obj << "f";
+      for (int c = 0; c < 3; ++c) {
+        const uint32_t v = m.triangles[3 * t + c];
+        obj << " " << v + 1 << "/" << vt[{v, chart[t]}] << "/" << v + 1;
+        corners.insert({std::to_string(v), vtlines[vt[{v, chart[t]}]], std::to_string(v),
+                        "side" + std::to_string(mat)});
+      }
+      obj << "\n";
+    }
+  }
+  std::ofstream(dir + "/in.obj") << obj.str();
+  ASSERT_EQ(system(("mkdir -p " + dir + "/sub").c_str()), 0);
+  ASSERT_EQ(run(dir + "/in.obj", dir + "/sub/out.obj", 0.1, 1000000, 2), "");
+  // Read the output back: its v/vt/vn lines by index, faces by material.
+  std::vector<std::string> ov, ovt, ovn;
+  std::string material, library;
+  size_t faces = 0, wrong = 0;
+  std::map<std::string, size_t> input_v; // a v line -> input vertex
+  {
+    std::istringstream in(obj.str());
+    size_t k = 0;
+    for (std::string l; std::getline(in, l);)
+      if (l.rfind("v ", 0) == 0) input_v[l] = k++;
+  }
+  for (const std::string& l : lines_of(slurp(dir + "/sub/out.obj"))) {
+    if (l.rfind("v ", 0) == 0) ov.push_back(std::to_string(input_v.count(l) ? input_v[l] : 999999));
+    if (l.rfind("vt ", 0) == 0) ovt.push_back(l);
+    if (l.rfind("vn ", 0) == 0) ovn.push_back(l);
+    if (l.rfind("usemtl ", 0) == 0) material = l.substr(7);
+    if (l.rfind("mtllib ", 0) == 0) library = l.substr(7);
+    if (l.rfind("f ", 0) != 0) continue;
+    ++faces;
+    unsigned a[3], b[3], c[3];
+    ASSERT_EQ(std::sscanf(l.c_str(), "f %u/%u/%u %u/%u/%u %u/%u/%u", &a[0], &b[0], &c[0], &a[1],
+                          &b[1], &c[1], &a[2], &b[2], &c[2]),
+              9)
+        << l;
+    for (int k = 0; k < 3; ++k) {
+      ASSERT_TRUE(a[k] >= 1 && a[k] <= ov.size() && b[k] >= 1 && b[k] <= ovt.size() && c[k] >= 1 &&
+                  c[k] <= ovn.size());
+      // vn lines are the vertex's own normal: the same vertex's v line index.
+      const std::string v = ov[a[k] - 1];
+      wrong += !corners.count({v, ovt[b[k] - 1], v, material});
+    }
+  }
+  EXPECT_EQ(library, "../in.mtl");
+  EXPECT_LE(faces, size_t(0.1 * double(m.face_count()) * 1.005 + 2));
+  EXPECT_GE(faces, size_t(0.1 * double(m.face_count()) * 0.9));
+  EXPECT_EQ(wrong, 0u) << "output corners that are no input corner (v, vt, vn, material)";
+  vrs::tiled::discard(dir);
+}
+
+// What a tiled run cannot carry is refused before any tile runs, by name; never dropped.
+TEST(Tiled, WhatCannotBeCarriedIsRefusedByName) {
+  const std::string dir = temp_dir();
+  EXPECT_NE(vrs::tiled::output_refusal("a.ply", "b.obj").find("name the output .ply"),
+            std::string::npos);
+  EXPECT_NE(vrs::tiled::output_refusal("a.stl", "b.stl").find("reads .ply, .obj or .off"),
+            std::string::npos);
+  EXPECT_EQ(vrs::tiled::output_refusal("a.PLY", "b.ply"), "");
+  const std::string head = "ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\n"
+                           "property float y\nproperty float z\n";
+  std::ofstream(dir + "/wide.ply")
+      << head << "element face 1\nproperty list uchar int vertex_indices\n"
+      << "property double weight\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 0.5\n";
+  EXPECT_NE(run(dir + "/wide.ply", dir + "/o.ply", 0.5, 1 << 30, 1)
+                .find("cannot carry the face property 'weight'"),
+            std::string::npos);
+  std::ofstream(dir + "/edges.ply")
+      << head << "element face 1\nproperty list uchar int vertex_indices\n"
+      << "element edge 1\nproperty int vertex1\nproperty int vertex2\n"
+      << "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n0 1\n";
+  EXPECT_NE(run(dir + "/edges.ply", dir + "/o.ply", 0.5, 1 << 30, 1).find("the element 'edge'"),
+            std::string::npos);
+  std::ofstream(dir + "/colors.off") << "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 255 0 0\n";
+  EXPECT_NE(run(dir + "/colors.off", dir + "/o.off", 0.5, 1 << 30, 1).find("OFF face colors"),
+            std::string::npos);
+  // Face properties that fit (a color) pass.
+  std::ofstream(dir + "/rgb.ply")
+      << head << "element face 1\nproperty list uchar int vertex_indices\n"
+      << "property uchar red\nproperty uchar green\nproperty uchar blue\n"
+      << "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 10 20 30\n";
+  ASSERT_EQ(run(dir + "/rgb.ply", dir + "/rgb-out.ply", 1.0, 1 << 30, 1), "");
+  EXPECT_NE(slurp(dir + "/rgb-out.ply").find("\n3 0 1 2 10 20 30\n"), std::string::npos);
+  std::ifstream o(dir + "/o.ply");
+  EXPECT_FALSE(o.good()); // no output of a refused run
   vrs::tiled::discard(dir);
 }
 

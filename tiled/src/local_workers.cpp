@@ -38,7 +38,7 @@ void run_level_locally(const std::string& workdir, const Level& level, int worke
                  workers, level.ratio);
   std::vector<uint64_t> order(level.tiles), size(level.tiles);
   for (uint64_t t = 0; t < level.tiles; ++t)
-    size[t] = record_count(tile_path(workdir, level.level, t, ".in"));
+    size[t] = record_count(tile_path(workdir, level.level, t, ".in"), false); // the order only
   std::iota(order.begin(), order.end(), uint64_t(0));
   std::stable_sort(order.begin(), order.end(),
                    [&](uint64_t a, uint64_t b) { return size[a] > size[b]; });

@@ -79,7 +79,7 @@ std::vector<uint32_t> octree_tiles(const std::vector<uint32_t>& hist, uint64_t b
 } // namespace
 
 uint64_t partition(const std::string& dir, int level, uint64_t vertex_count, const Box& box,
-                   uint64_t faces_per_tile, const FaceSource& source) {
+                   uint64_t faces_per_tile, bool keys, const FaceSource& source) {
   std::vector<uint32_t> hist(size_t(kFine) * kFine * kFine, 0);
   source([&](const FaceRecord& r) { ++hist[fine_cell(box, r)]; });
   uint32_t tiles = 0;
@@ -106,7 +106,7 @@ uint64_t partition(const std::string& dir, int level, uint64_t vertex_count, con
       FaceRecord w = r;
       w.shared = uint8_t((owner[r.v[0]] == kShared) | (owner[r.v[1]] == kShared) << 1 |
                          (owner[r.v[2]] == kShared) << 2);
-      out[t - first]->write(&w, sizeof w);
+      out[t - first]->write(&w, record_size(keys));
     });
     for (auto& w : out)
       w->commit();

@@ -22,8 +22,9 @@ struct Box {
 // depend on who runs what).
 using FaceSource = std::function<void(const std::function<void(const FaceRecord&)>&)>;
 
-// Writes L<level>/<tile>.in for every non-empty tile; returns the number of tiles.
+// Writes L<level>/<tile>.in for every non-empty tile (records with keys or short ones);
+// returns the number of tiles.
 uint64_t partition(const std::string& dir, int level, uint64_t vertex_count, const Box& box,
-                   uint64_t faces_per_tile, const FaceSource& source);
+                   uint64_t faces_per_tile, bool keys, const FaceSource& source);
 
 } // namespace vrs::tiled

@@ -58,23 +58,28 @@ void RecordWriter::commit() {
   }
 }
 
-void for_each_record(const std::string& path, const std::function<void(const FaceRecord&)>& fn) {
+void for_each_record(const std::string& path, bool keys,
+                     const std::function<void(const FaceRecord&)>& fn) {
   std::FILE* f = std::fopen(path.c_str(), "rb");
   if (!f) fail("cannot read " + path);
-  std::vector<FaceRecord> buf(4096);
+  const size_t size = record_size(keys);
+  std::vector<unsigned char> buf(4096 * size);
+  FaceRecord r{};
   size_t n;
-  while ((n = std::fread(buf.data(), sizeof(FaceRecord), buf.size(), f)) > 0)
-    for (size_t i = 0; i < n; ++i)
-      fn(buf[i]);
+  while ((n = std::fread(buf.data(), size, 4096, f)) > 0)
+    for (size_t i = 0; i < n; ++i) {
+      std::memcpy(&r, &buf[i * size], size);
+      fn(r);
+    }
   const bool bad = std::ferror(f);
   std::fclose(f);
   if (bad) fail("cannot read " + path);
 }
 
-uint64_t record_count(const std::string& path) {
+uint64_t record_count(const std::string& path, bool keys) {
   struct stat st;
   if (stat(path.c_str(), &st) != 0) fail("missing " + path);
-  return uint64_t(st.st_size) / sizeof(FaceRecord);
+  return uint64_t(st.st_size) / record_size(keys);
 }
 
 State read_state(const std::string& dir) {

@@ -1,8 +1,10 @@
 // The files a tiled run keeps in its work directory, and how they are written: every file is
 // written under a temporary name and renamed when complete, so a killed worker leaves either
 // nothing or a whole file (a re-run of its tile simply writes it again).
-//   vertices.bin        the input's positions, float xyz, in input order (for the output)
+//   vertices.bin        the input's positions, float xyz, in input order (for the tiles)
 //   faces.bin           the input's triangles, uint32 x3 (level 1 reads it)
+//   keys.bin            their CornerKeys, when the input has per-corner data
+//   materials           an OBJ's material names, one a line, by group number
 //   state               the run's settings and where it stands (key value lines)
 //   L<level>/<tile>.in  one tile's faces as records (below), shared vertices marked
 //   L<level>/<tile>.out the tile simplified, as records
@@ -17,14 +19,21 @@
 
 namespace vrs::tiled {
 
-// A face with its corners' global (input) vertex ids and positions: a tile needs nothing else.
+// A face with its corners' global (input) vertex ids, positions and per-corner keys (see
+// CornerKeys in mesh_stream.h): a tile needs nothing else. Without per-corner data in the
+// input the keys are zero and not written: a record is then its first kShortRecord bytes.
 struct FaceRecord {
   uint32_t v[3];
   float p[3][3];
   uint8_t shared; // bit c: corner c's vertex is also in another tile (a border)
   uint8_t pad[3];
+  uint32_t a[3], b[3], group;
 };
-static_assert(sizeof(FaceRecord) == 52, "records are written as they are");
+static_assert(sizeof(FaceRecord) == 80, "records are written as they are");
+constexpr size_t kShortRecord = 52;
+inline size_t record_size(bool keys) {
+  return keys ? sizeof(FaceRecord) : kShortRecord;
+}
 
 // Buffered writer to `path`, visible under that name only after commit().
 class RecordWriter {
@@ -46,9 +55,11 @@ class RecordWriter {
   bool durable_ = false;
 };
 
-// Calls fn for each record of the file; throws if it cannot be read whole.
-void for_each_record(const std::string& path, const std::function<void(const FaceRecord&)>& fn);
-uint64_t record_count(const std::string& path);
+// Calls fn for each record of the file (records with keys or short ones); throws if it cannot
+// be read whole.
+void for_each_record(const std::string& path, bool keys,
+                     const std::function<void(const FaceRecord&)>& fn);
+uint64_t record_count(const std::string& path, bool keys);
 
 // The state file: ordered key -> value text.
 using State = std::map<std::string, std::string>;

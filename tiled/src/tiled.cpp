@@ -5,6 +5,8 @@
 #include <cerrno>
 #include <cmath>
 #include <cstring>
+#include <fstream>
+#include <memory>
 #include <stdexcept>
 #include <vector>
 
@@ -12,8 +14,10 @@
 #include <unistd.h>
 
 #include "mesh_stream.h"
+#include "output_file.h"
 #include "partition.h"
 #include "tile_files.h"
+#include "tile_seams.h"
 #include "vrs/simplify.h"
 
 namespace vrs::tiled {
@@ -41,31 +45,51 @@ Box box_of(const State& s) {
   return b;
 }
 
-// Level 1's faces: faces.bin with the positions of vertices.bin (held in memory meanwhile).
-FaceSource input_faces(const std::string& dir, const std::vector<float>& positions) {
-  return [&dir, &positions](const std::function<void(const FaceRecord&)>& fn) {
-    std::FILE* f = std::fopen((dir + "/faces.bin").c_str(), "rb");
-    if (!f) throw std::runtime_error("cannot read " + dir + "/faces.bin");
+// Level 1's faces: faces.bin (and keys.bin) with the positions of vertices.bin (held in
+// memory meanwhile).
+FaceSource input_faces(const std::string& dir, const std::vector<float>& positions, bool keys) {
+  return [&dir, &positions, keys](const std::function<void(const FaceRecord&)>& fn) {
+    std::unique_ptr<std::FILE, int (*)(std::FILE*)> f(
+        std::fopen((dir + "/faces.bin").c_str(), "rb"), &std::fclose),
+        k(keys ? std::fopen((dir + "/keys.bin").c_str(), "rb") : nullptr, &std::fclose);
+    if (!f || (keys && !k)) throw std::runtime_error("cannot read the faces in " + dir);
     std::vector<uint32_t> buf(3 * 8192);
+    std::vector<CornerKeys> kbuf(keys ? 8192 : 0);
     size_t n;
     FaceRecord r{};
-    while ((n = std::fread(buf.data(), 12, buf.size() / 3, f)) > 0)
+    while ((n = std::fread(buf.data(), 12, buf.size() / 3, f.get())) > 0) {
+      if (keys && std::fread(kbuf.data(), sizeof(CornerKeys), n, k.get()) != n)
+        throw std::runtime_error("cannot read " + dir + "/keys.bin");
       for (size_t i = 0; i < n; ++i) {
         for (int c = 0; c < 3; ++c) {
           r.v[c] = buf[3 * i + c];
           std::memcpy(r.p[c], &positions[3 * size_t(r.v[c])], 12);
+          if (keys) r.a[c] = kbuf[i].a[c], r.b[c] = kbuf[i].b[c];
         }
+        if (keys) r.group = kbuf[i].group;
         fn(r);
       }
-    std::fclose(f);
+    }
   };
 }
 
-FaceSource level_outputs(const std::string& dir, int level, uint64_t tiles) {
-  return [dir, level, tiles](const std::function<void(const FaceRecord&)>& fn) {
+FaceSource level_outputs(const std::string& dir, int level, uint64_t tiles, bool keys) {
+  return [dir, level, tiles, keys](const std::function<void(const FaceRecord&)>& fn) {
     for (uint64_t t = 0; t < tiles; ++t)
-      for_each_record(tile_path(dir, level, t, ".out"), fn);
+      for_each_record(tile_path(dir, level, t, ".out"), keys, fn);
   };
+}
+
+bool has_keys(const State& s) {
+  return s.count("keys") && s.at("keys") == "1";
+}
+
+std::vector<std::string> read_lines(const std::string& path) {
+  std::vector<std::string> lines;
+  std::ifstream f(path);
+  for (std::string line; std::getline(f, line);)
+    lines.push_back(line);
+  return lines;
 }
 
 // What each tile of the level keeps (see run_tile).
@@ -99,21 +123,33 @@ Level begin(const std::string& input, const Settings& settings) {
   if (!in) throw std::runtime_error("cannot read " + input + ": " + std::strerror(errno));
   std::setvbuf(in, nullptr, _IOFBF, 1 << 20);
 
-  // The one streaming pass over the input.
+  // The one streaming pass over the input. Per-corner keys go to keys.bin from the first face
+  // that has any (the faces before it get zero keys then); a mesh without them has none.
   Box box{{HUGE_VALF, HUGE_VALF, HUGE_VALF}, {-HUGE_VALF, -HUGE_VALF, -HUGE_VALF}};
-  uint64_t vertices = 0, faces = 0;
+  uint64_t vertices = 0, faces = 0, texcoords = 0, normals = 0;
   int64_t max_index = -1, min_index = 0;
+  std::vector<std::string> materials;
+  std::unique_ptr<RecordWriter> kout;
   {
     RecordWriter vout(dir + "/vertices.bin"), fout(dir + "/faces.bin");
     StreamSink sink;
-    sink.vertex = [&](const float p[3]) {
+    // The tiles see positions from the first vertex on (float, with the precision of the
+    // mesh's own extent: georeferenced coordinates of 4e6 m would leave a float 0.5 m steps);
+    // the output copies the input's vertices, whatever the tiles saw.
+    double origin[3] = {0, 0, 0};
+    sink.vertex = [&](const double q[3]) {
+      if (vertices == 0)
+        for (int a = 0; a < 3; ++a)
+          origin[a] = std::isfinite(q[a]) ? q[a] : 0;
+      const float p[3] = {float(q[0] - origin[0]), float(q[1] - origin[1]),
+                          float(q[2] - origin[2])};
       vout.write(p, 12);
       ++vertices;
       for (int a = 0; a < 3; ++a)
         if (std::isfinite(p[a]))
           box.lo[a] = std::min(box.lo[a], p[a]), box.hi[a] = std::max(box.hi[a], p[a]);
     };
-    sink.triangle = [&](const int64_t v[3]) {
+    sink.triangle = [&](const int64_t v[3], const CornerKeys& k) {
       uint32_t t[3];
       for (int c = 0; c < 3; ++c) {
         max_index = std::max(max_index, v[c]);
@@ -121,9 +157,34 @@ Level begin(const std::string& input, const Settings& settings) {
         t[c] = uint32_t(std::min<int64_t>(std::max<int64_t>(v[c], 0), 0xffffffffLL));
       }
       fout.write(t, 12);
+      if (!kout && (k.group | k.a[0] | k.a[1] | k.a[2] | k.b[0] | k.b[1] | k.b[2])) {
+        kout = std::make_unique<RecordWriter>(dir + "/keys.bin");
+        const CornerKeys none{};
+        for (uint64_t f = 0; f < faces; ++f)
+          kout->write(&none, sizeof none);
+      }
+      if (kout) kout->write(&k, sizeof k);
       ++faces;
     };
-    const std::string error = read_mesh_stream(in, input, sink);
+    sink.uncarried = [&](const std::string& what) {
+      throw std::runtime_error("a tiled run cannot carry " + what + " of " + input +
+                               ": run it in core (without a memory budget)");
+    };
+    sink.material = [&](uint32_t, const std::string& name) { materials.push_back(name); };
+    sink.other_line = [&](const std::string& line) {
+      const size_t start = line.find_first_not_of(" \t");
+      if (start == std::string::npos) return;
+      const char* c = line.c_str() + start;
+      texcoords += c[0] == 'v' && c[1] == 't' && (c[2] == ' ' || c[2] == '\t');
+      normals += c[0] == 'v' && c[1] == 'n' && (c[2] == ' ' || c[2] == '\t');
+    };
+    std::string error;
+    try {
+      error = read_mesh_stream(in, input, sink);
+    } catch (...) {
+      std::fclose(in);
+      throw;
+    }
     std::fclose(in);
     if (!error.empty()) throw std::runtime_error("cannot read " + input + ": " + error);
     if (min_index < 0 || max_index >= int64_t(vertices))
@@ -134,6 +195,13 @@ Level begin(const std::string& input, const Settings& settings) {
       throw std::runtime_error("more than 4 294 967 293 vertices: not supported");
     vout.commit();
     fout.commit();
+    if (kout) kout->commit();
+  }
+  if (!materials.empty()) {
+    RecordWriter m(dir + "/materials");
+    for (const std::string& name : materials)
+      m.write((name + "\n").data(), name.size() + 1);
+    m.commit();
   }
   if (faces == 0) throw std::runtime_error(input + " has no faces");
   for (int a = 0; a < 3; ++a)
@@ -141,12 +209,17 @@ Level begin(const std::string& input, const Settings& settings) {
 
   State s;
   s["input"] = input;
+  s["keys"] = kout ? "1" : "0";
+  s["texcoords"] = num(double(texcoords));
+  s["normals"] = num(double(normals));
   s["vertices"] = num(double(vertices));
   s["input_faces"] = num(double(faces));
   s["faces"] = num(double(faces));
   s["target"] = num(std::floor(settings.ratio * double(faces)));
   s["ratio"] = num(settings.ratio);
-  s["faces_per_tile"] = num(double(settings.faces_per_tile));
+  // Tiles with per-corner data also hold their keys (28 bytes a face) and seams while they run.
+  const uint64_t per_tile = kout ? settings.faces_per_tile * 200 / 240 : settings.faces_per_tile;
+  s["faces_per_tile"] = num(double(per_tile));
   s["level"] = "1";
   s["stalls"] = "0";
   for (int a = 0; a < 3; ++a) {
@@ -160,19 +233,22 @@ Level begin(const std::string& input, const Settings& settings) {
     if (f) std::fclose(f);
     if (got != vertices) throw std::runtime_error("cannot read back " + dir + "/vertices.bin");
     // A mesh that fits the whole budget is one tile at once (what the last level would be).
-    const uint64_t budget =
-        faces <= settings.faces_per_tile * kTilesInMemory ? faces : settings.faces_per_tile;
-    s["tiles"] = num(double(partition(dir, 1, vertices, box, budget, input_faces(dir, positions))));
+    const uint64_t budget = faces <= per_tile * kTilesInMemory ? faces : per_tile;
+    s["tiles"] = num(double(partition(dir, 1, vertices, box, budget, bool(kout),
+                                      input_faces(dir, positions, bool(kout)))));
   }
-  std::remove((dir + "/faces.bin").c_str()); // in the tiles now; the disk is the next level's
+  // In the tiles now; the disk is the next level's.
+  std::remove((dir + "/faces.bin").c_str());
+  std::remove((dir + "/keys.bin").c_str());
   write_state(dir, s);
   return level_of(s);
 }
 
 void run_tile(const std::string& dir, int level, uint64_t tile, int lone_threads) {
   const State s = read_state(dir);
+  const bool keyed = has_keys(s);
   std::vector<FaceRecord> in;
-  for_each_record(tile_path(dir, level, tile, ".in"),
+  for_each_record(tile_path(dir, level, tile, ".in"), keyed,
                   [&](const FaceRecord& r) { in.push_back(r); });
   // Global ids -> local ones (sorted: the tile's mesh does not depend on the file's order).
   std::vector<uint32_t> ids;
@@ -190,13 +266,19 @@ void run_tile(const std::string& dir, int level, uint64_t tile, int lone_threads
   // Locked: every corner of a face at the border (one with a shared corner). A vertex that is
   // not shared has all its faces in this tile, so the tile sees every face that locks it.
   std::vector<uint8_t> locked(ids.size(), 0);
-  for (size_t f = 0; f < in.size(); ++f)
+  TileKeys keys;
+  if (keyed)
+    keys.a.resize(3 * in.size()), keys.b.resize(3 * in.size()), keys.group.resize(in.size());
+  for (size_t f = 0; f < in.size(); ++f) {
     for (int c = 0; c < 3; ++c) {
       const uint32_t l = local(in[f].v[c]);
       mesh.triangles[3 * f + c] = l;
       std::memcpy(&mesh.positions[3 * size_t(l)], in[f].p[c], 12);
       if (in[f].shared) locked[l] = 1;
+      if (keyed) keys.a[3 * f + c] = in[f].a[c], keys.b[3 * f + c] = in[f].b[c];
     }
+    if (keyed) keys.group[f] = in[f].group;
+  }
   // On the first two levels the ratio applies to the faces the tile may change: asking the
   // faces along its locked border to go too makes the rest of the tile go further than the
   // target asks (measured: +21 % mean error at 10 % on 1.2 M faces); the next level, shifted,
@@ -227,6 +309,11 @@ void run_tile(const std::string& dir, int level, uint64_t tile, int lone_threads
   opt.simplify_boundary_when_needed = alone;
   opt.threads = alone ? std::max(0, lone_threads) : 1;
   opt.locked = &locked;
+  // Per-corner data: its seams are kept as in core, and each output corner takes the keys of
+  // the input corner the core names.
+  const std::vector<uint32_t> seams = keyed ? tile_seams(mesh, keys) : std::vector<uint32_t>{};
+  opt.constrained_edges = keyed ? &seams : nullptr;
+  opt.corner_sources = keyed;
   const vrs::Report rep = vrs::simplify(mesh, opt);
   if (!rep.ok) throw std::runtime_error("tile " + std::to_string(tile) + ": " + rep.message);
   std::vector<uint32_t> global(mesh.vertex_count());
@@ -239,8 +326,13 @@ void run_tile(const std::string& dir, int level, uint64_t tile, int lone_threads
       const uint32_t l = mesh.triangles[3 * f + c];
       r.v[c] = global[l];
       std::memcpy(r.p[c], &mesh.positions[3 * size_t(l)], 12);
+      if (keyed) {
+        const uint32_t from = rep.corner_source[3 * f + c];
+        r.a[c] = keys.a[from], r.b[c] = keys.b[from];
+      }
     }
-    out.write(&r, sizeof r);
+    if (keyed) r.group = keys.group[rep.corner_source[3 * f] / 3];
+    out.write(&r, record_size(keyed));
   }
   out.commit();
 }
@@ -252,9 +344,10 @@ Level next_level(const std::string& dir) {
   const uint64_t tiles = uint64_t(state_number(s, "tiles"));
   const uint64_t before = uint64_t(state_number(s, "faces"));
   const uint64_t target = uint64_t(state_number(s, "target"));
+  const bool keyed = has_keys(s);
   uint64_t faces = 0;
   for (uint64_t t = 0; t < tiles; ++t)
-    faces += record_count(tile_path(dir, level, t, ".out"));
+    faces += record_count(tile_path(dir, level, t, ".out"), keyed);
   int stalls = double(faces) > 0.995 * double(before) ? int(state_number(s, "stalls")) + 1 : 0;
   s["stalls"] = std::to_string(stalls);
   s["output_faces"] = num(double(faces));
@@ -273,8 +366,9 @@ Level next_level(const std::string& dir) {
   // in-core run of it, borders and all.
   const uint64_t per_tile = uint64_t(state_number(s, "faces_per_tile"));
   const uint64_t budget = faces <= per_tile * kTilesInMemory ? faces : per_tile;
-  s["tiles"] = num(double(partition(dir, level + 1, uint64_t(state_number(s, "vertices")),
-                                    box_of(s), budget, level_outputs(dir, level, tiles))));
+  s["tiles"] =
+      num(double(partition(dir, level + 1, uint64_t(state_number(s, "vertices")), box_of(s), budget,
+                           keyed, level_outputs(dir, level, tiles, keyed))));
   write_state(dir, s);
   remove_tree(dir + "/L" + std::to_string(level));
   return level_of(s);
@@ -285,66 +379,20 @@ uint64_t finish(const std::string& dir, const std::string& output) {
   if (!s.count("done")) throw std::runtime_error("the tiled run is not done yet");
   const int level = int(state_number(s, "level"));
   const uint64_t tiles = uint64_t(state_number(s, "tiles"));
-  const uint64_t vertices = uint64_t(state_number(s, "vertices"));
-  const FaceSource faces = level_outputs(dir, level, tiles);
-  std::vector<uint32_t> index(vertices, 0); // input vertex -> output index + 1 (0: unused)
-  uint64_t face_count = 0;
-  faces([&](const FaceRecord& r) {
-    for (uint32_t v : r.v)
-      index[v] = 1;
-    ++face_count;
-  });
-  uint32_t next = 0;
-  for (uint32_t& i : index)
-    if (i) i = ++next;
-  const bool obj = output.size() >= 4 && (output.compare(output.size() - 4, 4, ".obj") == 0 ||
-                                          output.compare(output.size() - 4, 4, ".OBJ") == 0);
-  RecordWriter out(output, /*durable=*/true);
-  char line[128];
-  if (!obj) {
-    const std::string header = "ply\nformat binary_little_endian 1.0\ncomment vrsimplify, tiled\n"
-                               "element vertex " +
-                               std::to_string(next) +
-                               "\nproperty float x\nproperty float y\nproperty float z\n"
-                               "element face " +
-                               std::to_string(face_count) +
-                               "\nproperty list uchar int vertex_indices\nend_header\n";
-    out.write(header.data(), header.size());
-  }
-  std::FILE* f = std::fopen((dir + "/vertices.bin").c_str(), "rb");
-  if (!f) throw std::runtime_error("cannot read " + dir + "/vertices.bin");
-  std::vector<float> buf(3 * 8192);
-  size_t n;
-  uint64_t v = 0;
-  while ((n = std::fread(buf.data(), 12, buf.size() / 3, f)) > 0)
-    for (size_t i = 0; i < n; ++i, ++v) {
-      if (!index[v]) continue;
-      if (obj) {
-        const int len = std::snprintf(line, sizeof line, "v %.9g %.9g %.9g\n", buf[3 * i],
-                                      buf[3 * i + 1], buf[3 * i + 2]);
-        out.write(line, size_t(len));
-      } else {
-        out.write(&buf[3 * i], 12);
-      }
-    }
-  std::fclose(f);
-  faces([&](const FaceRecord& r) {
-    if (obj) {
-      const int len = std::snprintf(line, sizeof line, "f %u %u %u\n", index[r.v[0]], index[r.v[1]],
-                                    index[r.v[2]]);
-      out.write(line, size_t(len));
-    } else {
-      unsigned char rec[13];
-      rec[0] = 3;
-      for (int c = 0; c < 3; ++c) {
-        const int32_t i = int32_t(index[r.v[c]] - 1);
-        std::memcpy(rec + 1 + 4 * c, &i, 4);
-      }
-      out.write(rec, 13);
-    }
-  });
-  out.commit();
-  return face_count;
+  return write_output(s.at("input"), output, uint64_t(state_number(s, "vertices")),
+                      uint64_t(state_number(s, "texcoords")), uint64_t(state_number(s, "normals")),
+                      read_lines(dir + "/materials"),
+                      level_outputs(dir, level, tiles, has_keys(s)));
+}
+
+std::string output_refusal(const std::string& input, const std::string& output) {
+  const std::string in = format_of(input), out = format_of(output);
+  if (in.empty()) return "a tiled run reads .ply, .obj or .off: cannot read " + input;
+  if (out != in)
+    return "a tiled run writes the input's own format, so that every attribute and every "
+           "coordinate passes untouched: name the output ." +
+           in + " (convert it in core, without a memory budget)";
+  return {};
 }
 
 std::string make_work_dir(const std::string& parent) {
@@ -391,11 +439,12 @@ std::string check_mesh_file(const std::string& path) {
   std::FILE* in = std::fopen(path.c_str(), "rb");
   if (!in) return std::strerror(errno);
   int64_t vertices = 0, lowest = 0, highest = -1;
-  StreamSink sink{[&](const float*) { ++vertices; },
-                  [&](const int64_t v[3]) {
-                    for (int c = 0; c < 3; ++c)
-                      lowest = std::min(lowest, v[c]), highest = std::max(highest, v[c]);
-                  }};
+  StreamSink sink;
+  sink.vertex = [&](const double*) { ++vertices; };
+  sink.triangle = [&](const int64_t v[3], const CornerKeys&) {
+    for (int c = 0; c < 3; ++c)
+      lowest = std::min(lowest, v[c]), highest = std::max(highest, v[c]);
+  };
   std::string error = read_mesh_stream(in, path, sink);
   std::fclose(in);
   if (error.empty() && (lowest < 0 || highest >= vertices))

@@ -32,7 +32,14 @@ struct Level {
   double ratio = 1.0;  // what each tile keeps at this level
 };
 
-// Streams `input` (.ply ascii or binary, .obj) into the work directory and cuts level 1.
+// "" when a tiled run can write `output` from `input`, else why not: a tiled run writes the
+// input's own format (.ply, .obj, .off), every vertex copied as the input holds it (every
+// property, in its own precision) and every corner's data kept. Asked before any work.
+std::string output_refusal(const std::string& input, const std::string& output);
+
+// Streams `input` (.ply ascii or binary, .obj, ascii .off) into the work directory and cuts
+// level 1. What it cannot carry to the output (a PLY face property of more than 4 bytes, an
+// element other than vertex and face, OFF face colors) is refused here, with its name.
 Level begin(const std::string& input, const Settings& settings);
 // Simplifies one tile of the work directory's current level; reads and writes its files only,
 // and writes its output atomically (a re-run after a killed worker is safe). Tiles that run side
@@ -41,8 +48,9 @@ Level begin(const std::string& input, const Settings& settings);
 void run_tile(const std::string& workdir, int level, uint64_t tile, int lone_threads = 0);
 // Once every tile of the current level has run: cuts the next level, or returns tiles == 0.
 Level next_level(const std::string& workdir);
-// Writes the output (.ply binary, or .obj) atomically: the input's vertices that faces still
-// use, in input order, and the faces. Returns the output's face count.
+// Writes the output atomically in the input's format (see output_refusal): the input's
+// vertices that faces still use, in input order and as the input holds them, and the faces
+// with their per-corner data. Returns the output's face count.
 uint64_t finish(const std::string& workdir, const std::string& output);
 // The temporary name process `pid` writes `path` under until it is whole (then renamed): what
 // to remove when that process was killed.

@@ -1,0 +1,23 @@
+// The seams of a tile: edges across which the per-corner data of the input differs (a UV
+// chart's border, a hard normal, a material border). The tile constrains them in the core, as
+// the in-core run constrains the seams it finds, so every output corner keeps the data of an
+// input corner of its chart.
+#pragma once
+
+#include <cstdint>
+#include <vector>
+
+#include "vrs/simplify.h"
+
+namespace vrs::tiled {
+
+// Each face's three corners' keys (a, b: 3 a face) and its group, beside `mesh`'s triangles.
+struct TileKeys {
+  std::vector<uint32_t> a, b, group;
+};
+
+// Vertex pairs (a0, b0, a1, b1, ...) of the edges whose two faces disagree at either end or
+// differ in group, for Options::constrained_edges.
+std::vector<uint32_t> tile_seams(const vrs::Mesh& mesh, const TileKeys& keys);
+
+} // namespace vrs::tiled
