@@ -5,6 +5,8 @@ simplified one kept them exactly (for the tiled runs' benchmark, scripts/bench_t
     attributed_mesh.py textured IN.ply OUT.ply   # per-corner texcoord lists, 8 UV charts
     attributed_mesh.py colored IN.ply OUT.ply    # double coordinates (georeferenced), colors, quality
     attributed_mesh.py check INPUT OUTPUT        # prints "corners_or_vertices wrong"; exit 1 if any
+    attributed_mesh.py local IN.ply OUT.ply      # positions only, float, double ones moved by the
+                                                 # offset colored adds (to measure their error)
 
 IN is a binary PLY of float x y z and uchar/int triangles (vrs_bench --loop writes them).
 Textured: a corner's (u, v) is its vertex's (x, y) scaled into [0, 1], plus 2 * chart in u,
@@ -68,6 +70,9 @@ def positions(path):
     return v.astype(np.float64), faces["v"].astype(np.int64)
 
 
+ORIGIN = np.array([500000.123456789, 4100000.987654321, 120.0])
+
+
 def textured(src, dst):
     v, f = positions(src)
     lo, hi = v.min(0), v.max(0)
@@ -90,9 +95,9 @@ def colored(src, dst):
                    ("q", "<f4")])
     rec = np.zeros(len(v), dt)
     scale = 100.0 / (hi - lo).max()  # a 100 m object at survey coordinates
-    rec["x"] = 500000.123456789 + v[:, 0] * scale
-    rec["y"] = 4100000.987654321 + v[:, 1] * scale
-    rec["z"] = 120.0 + v[:, 2] * scale
+    rec["x"] = ORIGIN[0] + v[:, 0] * scale
+    rec["y"] = ORIGIN[1] + v[:, 1] * scale
+    rec["z"] = ORIGIN[2] + v[:, 2] * scale
     t = (v - lo) / (hi - lo)
     rec["r"], rec["g"], rec["b"] = (255 * t[:, 0]).astype("u1"), (255 * t[:, 1]).astype("u1"), (255 * t[:, 2]).astype("u1")
     rec["q"] = np.arange(len(v), dtype="<f4")
@@ -102,12 +107,15 @@ def colored(src, dst):
 
 
 def check(src, dst):
-    _, vin, fin, tex = read_ply(src)
-    _, vout, fout, _ = read_ply(dst)
+    hin, vin, fin, tex = read_ply(src)
+    hout, vout, fout, _ = read_ply(dst)
+    vprops = lambda h: [l for l in h if l.startswith("property") and "list" not in l]
+    if vprops(hin) != vprops(hout):  # another vertex layout: no record can be the input's
+        print(f"{len(vout)} vertices wrong of {len(vout)}: written as {', '.join(p.split()[1] + ' ' + p.split()[2] for p in vprops(hout))}")
+        return False
     # Output vertex -> input vertex by record bytes (every record of the test meshes differs).
     order = np.argsort(vin)
-    found = np.searchsorted(vin[order], vout)
-    found = np.minimum(found, len(vin) - 1)
+    found = np.minimum(np.searchsorted(vin[order], vout), len(vin) - 1)
     exact = vin[order][found] == vout
     wrong = int((~exact).sum())
     what = "vertices"
@@ -129,12 +137,27 @@ def check(src, dst):
     return wrong == 0
 
 
+def local(src, dst):
+    header, vertices, faces, _ = read_ply(src)
+    props = [l.split()[1:] for l in header if l.startswith("property") and "list" not in l]
+    types = {"float": "<f4", "double": "<f8", "uchar": "u1", "char": "i1", "short": "<i2",
+             "ushort": "<u2", "int": "<i4", "uint": "<u4"}
+    dt = np.dtype([(name, types[t]) for t, name in props])
+    rec = np.frombuffer(vertices.tobytes(), dt)
+    xyz = np.stack([rec["x"], rec["y"], rec["z"]], 1).astype(np.float64)
+    if rec.dtype["x"] == np.float64:
+        xyz -= ORIGIN  # the same origin for every file: errors compare
+    write_ply(dst, ["float x", "float y", "float z"], xyz.astype("<f4"), faces["v"])
+
+
 if __name__ == "__main__":
     cmd = sys.argv[1]
     if cmd == "textured":
         textured(sys.argv[2], sys.argv[3])
     elif cmd == "colored":
         colored(sys.argv[2], sys.argv[3])
+    elif cmd == "local":
+        local(sys.argv[2], sys.argv[3])
     elif cmd == "check":
         sys.exit(0 if check(sys.argv[2], sys.argv[3]) else 1)
     else:

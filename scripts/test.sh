@@ -2,7 +2,8 @@
 # Sets up, builds and runs every test: the Release build in build/ (core, CLI, the sweep over
 # the real meshes, and the plugin in every host: MeshLab 2020.09's meshlabserver and GUI, the
 # real MeshLab 2022.02 and 2025.07 GUIs in Debian trixie and sid roots, pymeshlab; the Debian
-# packages installed with apt-get), the wheel in a fresh virtual environment, then the core, CLI
+# packages installed with apt-get), the wheel in a fresh virtual environment (with the examples
+# the README and the documentation show), the documentation site, then the core, CLI
 # and sweep tests again built with AddressSanitizer + UndefinedBehaviorSanitizer in build/asan/
 # (MeshLab cannot load an instrumented plugin), the thread tests under ThreadSanitizer in
 # build/tsan/, then a bounded libFuzzer run (VRS_FUZZ_SECONDS, default 120, from a fixed seed,
@@ -16,6 +17,8 @@ top=$(cd "$(dirname "$0")/.." && pwd)
 (cd "$top/build" && ctest --output-on-failure -j "$(nproc)")
 echo "== the Python package: the wheel built, installed in a fresh virtual environment, tested"
 "$top/scripts/test_wheel.sh"
+echo "== the documentation site, built with --strict"
+"$top/scripts/docs.sh"
 if [ "${1:-}" != "--no-sanitizers" ]; then
   echo "== the same tests under AddressSanitizer + UndefinedBehaviorSanitizer"
   cmake -S "$top" -B "$top/build/asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVRS_SANITIZE=ON \

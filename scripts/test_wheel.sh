@@ -20,3 +20,5 @@ import_ms=$("$env/venv/bin/python" -c "import time; t = time.perf_counter(); imp
 echo "test_wheel: $(basename "$wheel"): $(du -k "$wheel" | cut -f1) KiB, import vrsimplify ${import_ms} ms"
 PATH="$env/venv/bin:$PATH" VRS_REQUIRE_PYMESHLAB=1 QT_QPA_PLATFORM=offscreen \
   "$env/venv/bin/python" -m pytest -q -p no:cacheprovider --rootdir "$env" "$top/python/tests"
+echo "test_wheel: the examples the README and the documentation show"
+PATH="$env/venv/bin:$PATH" QT_QPA_PLATFORM=offscreen "$env/venv/bin/python" "$top/tests/docs/run_examples.py" "$top"

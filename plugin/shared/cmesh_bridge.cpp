@@ -1,5 +1,6 @@
 #include "cmesh_bridge.h"
 
+#include <numeric>
 #include <unordered_map>
 
 #include <vcg/complex/algorithms/update/topology.h>
@@ -8,29 +9,75 @@ namespace vrs_plugin {
 
 namespace {
 
-// A quad loaded from a file is two triangles whose shared edge is flagged faux on both sides;
-// polygon export walks faux edges to rebuild it. Rebuilt faces carry no faux edge, and a
-// surviving half of a quad whose other half was rebuilt must lose its own, or the walk runs
-// off into faces that are not its quad (pymeshlab's default OBJ save threw std::bad_alloc).
+// A faux edge is flagged on both its faces, and only two faces have it; polygon export walks
+// faux edges to rebuild polygons. One flagged on one side only (a face rebuilt, or a file
+// that flags it so), or on an edge of more than two faces (a polygon written twice, once
+// whole and once as triangles), must go, or the walk runs off into faces that are not its
+// polygon (pymeshlab's default OBJ and OFF saves threw std::bad_alloc).
 void clear_unpaired_faux_edges(CMeshO& m) {
-  std::unordered_map<uint64_t, int> flagged; // undirected edge -> faces flagging it faux
+  struct Count {
+    int faces = 0, flagged = 0;
+  };
+  std::unordered_map<uint64_t, Count> edges;
   auto key = [&](const CFaceO& f, int e) {
     uint64_t a = vcg::tri::Index(m, f.cV(e)), b = vcg::tri::Index(m, f.cV((e + 1) % 3));
     return a < b ? a << 32 | b : b << 32 | a;
   };
   for (const CFaceO& f : m.face)
     for (int e = 0; e < 3; ++e)
-      if (!f.IsD() && f.IsF(e)) ++flagged[key(f, e)];
+      if (!f.IsD() && f.IsF(e)) edges[key(f, e)].flagged++;
+  if (edges.empty()) return;
+  for (const CFaceO& f : m.face)
+    for (int e = 0; e < 3; ++e)
+      if (!f.IsD()) {
+        const auto it = edges.find(key(f, e));
+        if (it != edges.end()) it->second.faces++;
+      }
   for (CFaceO& f : m.face)
     for (int e = 0; e < 3; ++e)
-      if (!f.IsD() && f.IsF(e) && flagged[key(f, e)] != 2) f.ClearF(e);
+      if (!f.IsD() && f.IsF(e)) {
+        const Count& c = edges[key(f, e)];
+        if (c.flagged != 2 || c.faces != 2) f.ClearF(e);
+      }
+}
+
+// A polygon loaded from a file (a quad, a pentagon, any size) is a set of triangles joined by
+// faux edges. After the filter it survives whole, or what is left of it is plain triangles:
+// a pentagon that lost one triangle would otherwise be written as a quad no input had.
+void break_lost_polygons(CMeshO& m, const CoreCopy& c, const std::vector<char>& survives) {
+  std::vector<uint32_t> parent(c.face.size());
+  std::iota(parent.begin(), parent.end(), 0u);
+  const auto find = [&](uint32_t f) {
+    while (parent[f] != f)
+      f = parent[f] = parent[parent[f]];
+    return f;
+  };
+  std::unordered_map<uint64_t, uint32_t> first; // faux edge -> the first face flagging it
+  for (uint32_t f = 0; f < c.face.size(); ++f) {
+    const CFaceO& face = m.face[c.face[f]];
+    for (int e = 0; e < 3; ++e) {
+      if (!face.IsF(e)) continue;
+      const uint64_t a = vcg::tri::Index(m, face.cV(e)),
+                     b = vcg::tri::Index(m, face.cV((e + 1) % 3));
+      const auto [it, fresh] = first.emplace(a < b ? a << 32 | b : b << 32 | a, f);
+      if (!fresh) parent[find(f)] = find(it->second);
+    }
+  }
+  std::vector<char> lost(c.face.size(), 0);
+  for (uint32_t f = 0; f < c.face.size(); ++f)
+    if (!survives[f]) lost[find(f)] = 1;
+  for (uint32_t f = 0; f < c.face.size(); ++f)
+    if (survives[f] && lost[find(f)])
+      for (int e = 0; e < 3; ++e)
+        m.face[c.face[f]].ClearF(e);
 }
 
 } // namespace
 
 CoreCopy to_core(CMeshO& m) {
   CoreCopy c;
-  std::vector<uint32_t> index(m.vert.size(), vrs::kRemoved);
+  std::vector<uint32_t>& index = c.index;
+  index.assign(m.vert.size(), vrs::kRemoved);
   c.mesh.positions.reserve(3 * size_t(m.vn));
   c.vertex.reserve(size_t(m.vn));
   for (size_t i = 0; i < m.vert.size(); ++i) {
@@ -69,12 +116,23 @@ std::vector<uint32_t> seams(const CMeshO& m, const CoreCopy& c, const vrs_vcg::C
                              [&](uint32_t f, int k) { return c.mesh.triangles[3 * f + k]; });
 }
 
-std::vector<uint8_t> lock_outside_selection(const CMeshO& m, const CoreCopy& c) {
+std::vector<uint8_t> vertex_locks(const CMeshO& m, const CoreCopy& c, bool selected_only) {
+  bool edges = false;
+  for (const auto& e : m.edge)
+    edges = edges || !e.IsD();
+  if (!edges && !selected_only) return {};
   std::vector<uint8_t> lock(c.vertex.size(), 0);
-  for (size_t f = 0; f < c.face.size(); ++f)
-    if (!m.face[c.face[f]].IsS())
-      for (int k = 0; k < 3; ++k)
-        lock[c.mesh.triangles[3 * f + k]] = 1;
+  for (const auto& e : m.edge)
+    if (!e.IsD())
+      for (int k = 0; k < 2; ++k) {
+        const uint32_t v = c.index[vcg::tri::Index(m, e.cV(k))];
+        if (v != vrs::kRemoved) lock[v] = 1;
+      }
+  if (selected_only)
+    for (size_t f = 0; f < c.face.size(); ++f)
+      if (!m.face[c.face[f]].IsS())
+        for (int k = 0; k < 3; ++k)
+          lock[c.mesh.triangles[3 * f + k]] = 1;
   return lock;
 }
 
@@ -115,6 +173,7 @@ void apply(CMeshO& m, const CoreCopy& c, const vrs::Mesh& out, const vrs::Report
     CFaceO& f = m.face[c.face[s]];
     if (f.V(1) != kept[out.triangles[3 * t + 1]]) vrs_vcg::reverse_face(d, f);
   }
+  break_lost_polygons(m, c, survives);
   for (size_t f = 0; f < c.face.size(); ++f)
     if (!survives[f]) vcg::tri::Allocator<CMeshO>::DeleteFace(m, m.face[c.face[f]]);
   for (size_t v = 0; v < r.remap.size(); ++v)

@@ -16,13 +16,16 @@ namespace vrs_plugin {
 struct CoreCopy {
   vrs::Mesh mesh;
   std::vector<CVertexO*> vertex; // core vertex index -> CMeshO vertex
+  std::vector<uint32_t> index;   // CMeshO vertex index -> core index (kRemoved: deleted)
   std::vector<size_t> face;      // core face index -> index in CMeshO::face (which may move)
 };
 CoreCopy to_core(CMeshO& m);
 
-// Per-vertex lock for "Selected": a vertex may go only if every face around it is selected
-// (as Quadric Edge Collapse Decimation does).
-std::vector<uint8_t> lock_outside_selection(const CMeshO& m, const CoreCopy& copy);
+// Per-vertex locks (empty when none): the ends of the layer's edges (an OBJ's `l` polylines;
+// removing one would leave an edge pointing at a deleted vertex), and with "Selected" every
+// vertex of an unselected face (a vertex may go only if every face around it is selected, as
+// Quadric Edge Collapse Decimation does).
+std::vector<uint8_t> vertex_locks(const CMeshO& m, const CoreCopy& copy, bool selected_only);
 
 // The per-corner and per-face data the layer holds (texture coordinates, normals, colors).
 // `feature_angle` (degrees, 0: off) is also the crease angle of per-corner normals.

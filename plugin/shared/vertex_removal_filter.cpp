@@ -179,11 +179,8 @@ QString Application::simplify_layer(MeshModel& m, const FilterSettings& s, int l
   const std::vector<uint32_t> seam_edges = seams(m.cm, copy, data);
   o.constrained_edges = &seam_edges;
   o.corner_sources = data.any();
-  std::vector<uint8_t> lock;
-  if (s.selected) {
-    lock = lock_outside_selection(m.cm, copy);
-    o.locked = &lock;
-  }
+  const std::vector<uint8_t> lock = vertex_locks(m.cm, copy, s.selected);
+  if (!lock.empty()) o.locked = &lock;
   o.progress = progress;
   vcg::tri::UpdateBounding<CMeshO>::Box(m.cm);
   if (level == 1) totals_.diagonal = m.cm.bbox.Diag();

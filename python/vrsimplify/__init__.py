@@ -24,15 +24,22 @@ __all__ = ["simplify", "Result", "bounding_box_diagonal"]
 class Result:
     """A simplified mesh and where each of its parts comes from in the input."""
 
-    vertices: np.ndarray  # (m, 3): the input's rows vertex_map names, same dtype, same values
-    faces: np.ndarray  # (k, 3): indices into vertices, the input faces' dtype
-    vertex_map: np.ndarray  # (m,) int64: output vertex -> input vertex
-    face_source: np.ndarray  # (k,) int64: the input face an output face is, or -1 if new
-    # (k, 3) int64: for each output corner the input corner (3 * face + corner) whose
-    # per-corner data (UVs, normals) it takes: same vertex, same side of every seam
+    vertices: np.ndarray
+    """(m, 3): the input's rows `vertex_map` names, same dtype, same values, bit for bit."""
+    faces: np.ndarray
+    """(k, 3): indices into `vertices`, in the input faces' dtype."""
+    vertex_map: np.ndarray
+    """(m,) int64: output vertex -> input vertex (`colors[vertex_map]` carries any per-vertex
+    data)."""
+    face_source: np.ndarray
+    """(k,) int64: the input face an output face is, or -1 for a face the re-triangulation made."""
     corner_source: np.ndarray
-    report: dict  # counts, "stop_reason" as text, "error_bound" (mesh units; None unless tracked),
-    # "boundary_simplified", warnings
+    """(k, 3) int64: for each output corner the input corner (3 * face + corner) whose
+    per-corner data (UVs, normals) it takes: the same vertex, on the same side of every seam."""
+    report: dict
+    """What the run did: counts, `stop_reason` as text, `target_reached`, `error_bound` (mesh
+    units; None unless a bound was tracked), `boundary_simplified`, `relaxed_removals`,
+    `stop_detail`, warnings in `message` (see the report table in the documentation)."""
 
 
 def _array(a, what: str, kinds: str) -> np.ndarray:

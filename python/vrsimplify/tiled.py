@@ -51,6 +51,9 @@ def simplify(src: Union[str, os.PathLike], dst: Union[str, os.PathLike], *, rati
              keep_workdir: bool = False) -> dict:
     """Simplifies the file `src` to `ratio` of its faces into `dst`, in tiles.
 
+    dst is written in src's own format (.ply, .obj, .off; another is refused before any
+    work): each vertex copied as src holds it (every property, in its own precision), each
+    corner with its input corner's data (OBJ vt/vn, PLY texcoord), OBJ materials kept.
     memory: the budget a tile is cut for ("2G", "512M" or bytes); a tile takes a quarter of
     it. The tiles, and so the output, depend on it alone, not on who runs them.
     client: a dask.distributed Client: tiles become its tasks (retried `retries` times if a
@@ -59,6 +62,7 @@ def simplify(src: Union[str, os.PathLike], dst: Union[str, os.PathLike], *, rati
     (unless keep_workdir; default: dst's folder; about 70 bytes a face). With a client, a path
     every worker can reach, or an fsspec URL (s3://bucket/tmp, file:///shared/tmp...): the
     driver then keeps its files in dst's folder and the workers fetch and return tiles.
+    progress: print each level's tiles and times to stderr.
     Returns counts and times; raises ValueError with the reason (a malformed file, a full disk,
     an unwritable work directory) and leaves no output file behind.
     """
