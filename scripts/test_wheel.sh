@@ -1,24 +1,83 @@
 #!/usr/bin/env bash
-# The wheel as a user gets it: scripts/build_wheel.sh, then `pip install dist/*.whl` into a
-# fresh virtual environment (Debian's python3) with pymeshlab, trimesh, pytest and Dask at the pinned
-# versions, `python -c "import vrsimplify"`, and the package's tests (python/tests) run from
-# outside the source tree against the installed files only. Prints the wheel's size and the
-# import time.
+# The wheels as users get them: scripts/build_wheel.sh, then each wheel `pip install`ed into a
+# fresh virtual environment of the Python it is for, with pymeshlab, trimesh, pytest and Dask at
+# the pinned versions, `import vrsimplify` and a 1 M-face run, and the package's tests
+# (python/tests) run from outside the source tree against the installed files only:
+#   - cp311 on Debian's python3 (3.11);
+#   - cp312-abi3 on the CPython 3.13 scripts/lib/cpython.sh builds, and on CPython 3.14 inside
+#     the Debian sid root (scripts/setup.sh --roots; skipped, saying so, without it);
+#   - the sdist, built by `pip install` (a compiler at hand) on Debian's python3: the numpy API.
+# Then the examples the README and the documentation show, in the cp311 environment. Prints
+# each wheel's size and import time.
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
+cache=${VRS_CACHE:-/var/cache/vrsimplify}
 "$top/scripts/build_wheel.sh"
-wheel=$(ls "$top"/dist/vrsimplify-*.whl)
-env=$(mktemp -d)
-trap 'rm -rf "$env"' EXIT
-/usr/bin/python3 -m venv "$env/venv"
 pin() { grep -E "^$1==" "$top/requirements.txt"; }
-"$env/venv/bin/pip" install -q --disable-pip-version-check "$wheel" \
-  "$(pin pymeshlab)" "$(pin trimesh)" "$(pin pytest)" "$(pin dask)" "$(pin distributed)" "$(pin fsspec)"
-cd "$env"
-"$env/venv/bin/python" -c "import vrsimplify, sys; assert '$env' in vrsimplify.__file__, vrsimplify.__file__"
-import_ms=$("$env/venv/bin/python" -c "import time; t = time.perf_counter(); import vrsimplify; print(f'{1e3 * (time.perf_counter() - t):.0f}')")
-echo "test_wheel: $(basename "$wheel"): $(du -k "$wheel" | cut -f1) KiB, import vrsimplify ${import_ms} ms"
-PATH="$env/venv/bin:$PATH" VRS_REQUIRE_PYMESHLAB=1 QT_QPA_PLATFORM=offscreen \
-  "$env/venv/bin/python" -m pytest -q -p no:cacheprovider --rootdir "$env" "$top/python/tests"
+pins=("$(pin pymeshlab)" "$(pin numpy)" "$(pin trimesh)" "$(pin pytest)" "$(pin dask)" "$(pin distributed)" "$(pin fsspec)")
+scratch=$(mktemp -d)
+trap 'rm -rf "$scratch"' EXIT
+# A 1 M-face run: an icosphere of 1 310 720 faces to 10 %.
+big_run='import numpy as np, trimesh, vrsimplify
+m = trimesh.creation.icosphere(subdivisions=8)
+r = vrsimplify.simplify(np.asarray(m.vertices), np.asarray(m.faces), ratio=0.1)
+assert r.report["target_reached"] and len(r.faces) <= 131072, r.report
+print("a %d-face run to %d faces" % (len(m.faces), len(r.faces)))'
+
+suite() { # LABEL PYTHON WHEEL [pip runner...]
+  local label=$1 python=$2 wheel=$3 env=$scratch/$1
+  "$python" -m venv "$env/venv"
+  "$env/venv/bin/python" -m pip install -q --disable-pip-version-check "$wheel" "${pins[@]}"
+  cd "$env"
+  "$env/venv/bin/python" -c "import vrsimplify, sys; assert '$env' in vrsimplify.__file__, vrsimplify.__file__"
+  local ms
+  ms=$("$env/venv/bin/python" -c "import time; t = time.perf_counter(); import vrsimplify; print(f'{1e3 * (time.perf_counter() - t):.0f}')")
+  echo "test_wheel [$label]: $(basename "$wheel"): $(du -k "$wheel" | cut -f1) KiB, import vrsimplify ${ms} ms, $("$env/venv/bin/python" -c "$big_run")"
+  PATH="$env/venv/bin:$PATH" VRS_REQUIRE_PYMESHLAB=1 QT_QPA_PLATFORM=offscreen \
+    "$env/venv/bin/python" -m pytest -q -p no:cacheprovider --rootdir "$env" "$top/python/tests"
+  cd "$top"
+}
+
+cp311=$(ls "$top"/dist/vrsimplify-*-cp311-cp311-*.whl)
+abi3=$(ls "$top"/dist/vrsimplify-*-cp312-abi3-*.whl)
+sdist=$(ls "$top"/dist/vrsimplify-*.tar.gz)
+suite cp311 /usr/bin/python3 "$cp311"
 echo "test_wheel: the examples the README and the documentation show"
-PATH="$env/venv/bin:$PATH" QT_QPA_PLATFORM=offscreen "$env/venv/bin/python" "$top/tests/docs/run_examples.py" "$top"
+PATH="$scratch/cp311/venv/bin:$PATH" QT_QPA_PLATFORM=offscreen "$scratch/cp311/venv/bin/python" "$top/tests/docs/run_examples.py" "$top"
+suite cp313-abi3 "$("$top/scripts/lib/cpython.sh")" "$abi3"
+
+# CPython 3.14 in the sid root: Debian's python3.14 there has no ensurepip, so pip runs from
+# its wheel (the one CPython 3.13 bundles); this machine's certificates go in for pip.
+root=$cache/roots/sid
+if [ -x "$root/usr/bin/python3.14" ]; then
+  inside=/tmp/vrs-wheel-test
+  rm -rf "$root$inside" && mkdir -p "$root$inside"
+  cp "$abi3" "$root$inside/"
+  cp -r "$top/python/tests" "$root$inside/tests"
+  cp /etc/ssl/certs/ca-certificates.crt "$root$inside/ca.crt"
+  cp "$(dirname "$("$top/scripts/lib/cpython.sh")")"/../lib/python3.13/ensurepip/_bundled/pip-*.whl "$root$inside/"
+  pipwhl=$(basename "$(ls "$root$inside"/pip-*.whl)")
+  cat >"$root$inside/run.sh" <<RUN
+set -e
+cd $inside
+export PIP_CERT=$inside/ca.crt PIP_DISABLE_PIP_VERSION_CHECK=1 QT_QPA_PLATFORM=offscreen VRS_REQUIRE_PYMESHLAB=1
+python3.14 -m venv --without-pip venv
+venv/bin/python $pipwhl/pip install -q $(basename "$abi3") ${pins[*]} pip
+venv/bin/python -c "import vrsimplify; print('cp314 import ok', vrsimplify.__version__)"
+venv/bin/python -c '$big_run'
+PATH=$inside/venv/bin:\$PATH venv/bin/python -m pytest -q -p no:cacheprovider --rootdir $inside tests
+RUN
+  echo "test_wheel [cp314-abi3, Debian sid root]: $(basename "$abi3")"
+  "$top/scripts/lib/in_root.sh" "$root" bash "$inside/run.sh"
+  rm -rf "$root$inside"
+else
+  echo "test_wheel: no Debian sid root ($root; scripts/setup.sh --roots makes it): CPython 3.14 not tried"
+fi
+
+echo "test_wheel [sdist]: pip install $(basename "$sdist") (built here)"
+/usr/bin/python3 -m venv "$scratch/sdist"
+"$scratch/sdist/bin/python" -m pip install -q --disable-pip-version-check "$sdist" "$(pin numpy)"
+(cd "$scratch" && "$scratch/sdist/bin/python" -c "$(printf '%s\n' 'import numpy as np, vrsimplify' \
+  'v = np.random.default_rng(1).random((200, 3)); v[:, 2] = 0' \
+  'f = np.array([[i, i + 1, i + 2] for i in range(0, 195, 3)])' \
+  'r = vrsimplify.simplify(v, f, ratio=0.5); print("sdist: import and a run ok,", r.report["stop_reason"])')")

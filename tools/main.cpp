@@ -8,8 +8,10 @@
 #include <cstring>
 #include <string>
 
+#include <strings.h>
 #include <unistd.h>
 
+#include "exact_vertices.h"
 #include "mesh_io.h"
 #include "progress_bar.h"
 #include "tiled_run.h"
@@ -351,6 +353,18 @@ int main(int argc, char** argv) {
     return 3;
   }
   vrs::Mesh mesh = vrs_tool::to_core(*loaded.doc);
+  // A PLY's double coordinates, or an ascii output: the input's vertex records are kept aside
+  // (vcglib's mesh holds float, and prints 6 digits), the core sees the doubles.
+  const vrs_tool::ExactVertices exact(in, ascii);
+  if (exact.has_double_positions()) {
+    if (!exact.core_positions(mesh.vertex_count(), mesh.positions))
+      std::fprintf(stderr, "vrsimplify: note: double coordinates read as float\n");
+    else if (out.size() < 4 || strcasecmp(out.c_str() + out.size() - 4, ".ply") != 0)
+      std::fprintf(stderr,
+                   "vrsimplify: note: the input has double coordinates; %s holds "
+                   "float ones (write .ply to keep them exact)\n",
+                   out.c_str());
+  }
   const double diag = vrs::bounding_box_diagonal(mesh);
   opt.max_error = max_error_percent ? max_error / 100.0 * diag : max_error;
   if (error_bound && !(opt.max_error > 0)) opt.max_error = HUGE_VAL;
@@ -374,7 +388,10 @@ int main(int argc, char** argv) {
     return 1;
   }
   vrs_tool::apply(*loaded.doc, mesh, report);
-  std::string err = vrs_tool::save(*loaded.doc, out, ascii);
+  std::vector<uint32_t> kept(exact.needed() ? mesh.vertex_count() : 0); // output -> input vertex
+  for (size_t v = 0; exact.needed() && v < report.remap.size(); ++v)
+    if (report.remap[v] != vrs::kRemoved) kept[report.remap[v]] = uint32_t(v);
+  std::string err = vrs_tool::save(*loaded.doc, out, ascii, &exact, &kept);
   vrs_tool::close(loaded.doc);
   if (!err.empty()) {
     std::fprintf(stderr, "vrsimplify: %s\n", err.c_str());

@@ -17,6 +17,8 @@
 #include <vcg/complex/complex.h>
 #include <wrap/io_trimesh/export.h>
 #include <wrap/io_trimesh/export_ply.h>
+
+#include "exact_vertices.h"
 #include <wrap/io_trimesh/import.h>
 
 namespace vrs_tool {
@@ -184,7 +186,8 @@ std::string write_as(VcgDocument& doc, const std::string& path, bool ascii) {
 
 } // namespace
 
-std::string save(VcgDocument& doc, const std::string& path, bool ascii) {
+std::string save(VcgDocument& doc, const std::string& path, bool ascii, const ExactVertices* exact,
+                 const std::vector<uint32_t>* kept) {
   // Under a temporary name beside the output (same extension: it picks the format), renamed
   // once whole, with Ctrl-C and kill held meanwhile: a failed or interrupted write never leaves
   // a half-written file, under either name.
@@ -197,7 +200,15 @@ std::string save(VcgDocument& doc, const std::string& path, bool ascii) {
     sigaddset(&hold, sig);
   sigprocmask(SIG_BLOCK, &hold, &before);
   std::string err = write_as(doc, tmp, ascii);
-  if (err.empty() && std::rename(tmp.c_str(), path.c_str()) != 0) err = std::strerror(errno);
+  if (err.empty() && exact && kept && exact->needed() && ends_with(path, ".ply")) {
+    const std::string vertices = tmp + ".vertices.ply";
+    err = exact->rewrite(tmp, vertices, *kept);
+    std::remove(tmp.c_str());
+    if (err.empty() && std::rename(vertices.c_str(), path.c_str()) != 0) err = std::strerror(errno);
+    std::remove(vertices.c_str());
+  } else if (err.empty() && std::rename(tmp.c_str(), path.c_str()) != 0) {
+    err = std::strerror(errno);
+  }
   if (!err.empty()) std::remove(tmp.c_str());
   sigprocmask(SIG_SETMASK, &before, nullptr);
   return err.empty() ? err : "cannot write " + path + ": " + err;

@@ -35,8 +35,13 @@ std::vector<uint32_t> seams(const VcgDocument& doc, const vrs::Mesh& core);
 // corner the report names (when it has corner sources).
 void apply(VcgDocument& doc, const vrs::Mesh& simplified, const vrs::Report& report);
 
+class ExactVertices;
+
 // Writes with every per-vertex, per-corner and per-face attribute the input had (per-corner
-// and per-face ones only when apply() could carry them). Empty string on success.
-std::string save(VcgDocument& doc, const std::string& path, bool ascii);
+// and per-face ones only when apply() could carry them). Empty string on success. With
+// `exact` (needed()) and a PLY output, the vertices are the input's records, untouched:
+// `kept` names the input vertex of each output vertex.
+std::string save(VcgDocument& doc, const std::string& path, bool ascii,
+                 const ExactVertices* exact = nullptr, const std::vector<uint32_t>* kept = nullptr);
 
 } // namespace vrs_tool
