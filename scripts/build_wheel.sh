@@ -46,8 +46,11 @@ for wheel in "$raw"/*/vrsimplify-*.whl; do
   PATH="$cache/venv/bin:$PATH" "$python" -m auditwheel repair --exclude libmeshlab-common.so --exclude 'libQt5*.so.5' \
     -w "$top/dist" "$wheel" >>"$log" 2>&1 || { tail -n 20 "$log" >&2; exit 1; }
 done
-ls "$top"/dist/vrsimplify-*-cp312-abi3-*.whl >/dev/null 2>&1 ||
+abi3=$(ls "$top"/dist/vrsimplify-*-cp312-abi3-*.whl 2>/dev/null) ||
   { echo "build_wheel: no cp312-abi3 wheel was made" >&2; exit 1; }
+# The tag alone proves nothing: the module in it must be the stable-ABI build.
+"$python" -c 'import sys, zipfile; sys.exit(not any(n.endswith("_core.abi3.so") for n in zipfile.ZipFile(sys.argv[1]).namelist()))' "$abi3" ||
+  { echo "build_wheel: $(basename "$abi3") holds no _core.abi3.so" >&2; exit 1; }
 # The sdist: what `pip install` builds from on a machine with a compiler.
 "$python" -m build --sdist --outdir "$top/dist" "$top" >>"$log" 2>&1 || { tail -n 20 "$log" >&2; exit 1; }
 for out in "$top"/dist/vrsimplify-*.whl "$top"/dist/vrsimplify-*.tar.gz; do

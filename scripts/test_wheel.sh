@@ -53,7 +53,9 @@ if [ -x "$root/usr/bin/python3.14" ]; then
   inside=/tmp/vrs-wheel-test
   rm -rf "$root$inside" && mkdir -p "$root$inside"
   cp "$abi3" "$root$inside/"
-  cp -r "$top/python/tests" "$root$inside/tests"
+  mkdir -p "$root$inside/python" # the tests read ../../meshes and ../examples
+  cp -r "$top/python/tests" "$top/python/examples" "$root$inside/python/"
+  cp -r "$top/meshes" "$root$inside/meshes"
   cp /etc/ssl/certs/ca-certificates.crt "$root$inside/ca.crt"
   cp "$(dirname "$("$top/scripts/lib/cpython.sh")")"/../lib/python3.13/ensurepip/_bundled/pip-*.whl "$root$inside/"
   pipwhl=$(basename "$(ls "$root$inside"/pip-*.whl)")
@@ -65,7 +67,7 @@ python3.14 -m venv --without-pip venv
 venv/bin/python $pipwhl/pip install -q $(basename "$abi3") ${pins[*]} pip
 venv/bin/python -c "import vrsimplify; print('cp314 import ok', vrsimplify.__version__)"
 venv/bin/python -c '$big_run'
-PATH=$inside/venv/bin:\$PATH venv/bin/python -m pytest -q -p no:cacheprovider --rootdir $inside tests
+PATH=$inside/venv/bin:\$PATH venv/bin/python -m pytest -q -p no:cacheprovider --rootdir $inside python/tests
 RUN
   echo "test_wheel [cp314-abi3, Debian sid root]: $(basename "$abi3")"
   "$top/scripts/lib/in_root.sh" "$root" bash "$inside/run.sh"

@@ -109,6 +109,23 @@ bool parse_count(const char* s, size_t& out) {
   return *end == '\0';
 }
 
+// Text as a JSON string's content.
+std::string json_text(const std::string& s) {
+  std::string out;
+  for (const char c : s) {
+    if (c == '"' || c == '\\') out += '\\';
+    if (static_cast<unsigned char>(c) < 0x20) {
+      char b[8];
+      std::snprintf(b, sizeof b, "\\u%04x", c);
+      out += b;
+      continue;
+    }
+    out += c;
+  }
+  return out;
+}
+
+// The report's keys are the numpy API's and pymeshlab's (docs/report.md).
 void print_json(const vrs::Report& r, double seconds_simplify, double seconds_total, double diag,
                 bool bounded) {
   std::printf("{\"ok\":%s,\"input_vertices\":%zu,\"input_faces\":%zu,\"output_vertices\":%zu,"
@@ -124,13 +141,15 @@ void print_json(const vrs::Report& r, double seconds_simplify, double seconds_to
               "\"constrained_edges\":%zu,\"input_issues\":{\"degenerate_faces\":%zu,"
               "\"nonfinite_vertices\":%zu,\"unreferenced_vertices\":%zu,"
               "\"reoriented_faces\":%zu},"
-              "\"relaxed_removals\":%zu,\"boundary_simplified\":%s,\"stop_detail\":\"%s\"",
+              "\"relaxed_removals\":%zu,\"boundary_simplified\":%s,\"stop_detail\":\"%s\","
+              "\"message\":\"%s\"",
               r.rejected_total(), vrs::stop_reason_name(r.stop),
               r.target_reached ? "true" : "false", r.max_removed_factor, r.kept_boundary,
               r.kept_nonmanifold, r.kept_locked, r.kept_high_valence, r.kept_constrained,
               r.constrained_edges, r.dropped_degenerate_faces, r.nonfinite_vertices,
               r.unreferenced_vertices, r.reoriented_faces, r.relaxed_removals,
-              r.boundary_simplified ? "true" : "false", r.stop_detail.c_str());
+              r.boundary_simplified ? "true" : "false", json_text(r.stop_detail).c_str(),
+              json_text(r.message).c_str());
   // A bound that was not tracked is absent, never 0 (which would read "no error at all").
   if (bounded)
     std::printf(",\"error_bound\":%.9g,\"error_bound_percent\":%.9g", r.error_bound,
@@ -179,7 +198,8 @@ int main(int argc, char** argv) {
   // The progress bar: on a terminal by default; --progress forces it (logs), --quiet drops it.
   int progress = -1;
   int targets = 0;
-  double max_error = 0; // mesh units, or percent of the diagonal
+  std::string not_ratio; // the first target option a tiled run does not take (all but --ratio)
+  double max_error = 0;  // mesh units, or percent of the diagonal
   bool max_error_percent = false, error_bound = false;
   vrs_tool::TiledRequest tiled; // --memory / --scheduler
   std::string not_tiled;        // the first option a tiled run would not honour
@@ -234,6 +254,7 @@ int main(int argc, char** argv) {
     } else if (a == "--error-bound") {
       error_bound = true;
     } else if (a == "--max-error") {
+      if (not_ratio.empty()) not_ratio = a;
       std::string e = (v = value()) ? v : "";
       max_error_percent = !e.empty() && e.back() == '%';
       if (max_error_percent) e.pop_back();
@@ -255,6 +276,7 @@ int main(int argc, char** argv) {
       if (!(v = value()) || !*v) return usage_error("--scheduler needs a Dask scheduler address");
       tiled.scheduler = v;
     } else if (a == "--auto") {
+      if (not_ratio.empty()) not_ratio = a;
       opt.target.kind = vrs::TargetKind::Auto;
       ++targets;
     } else if (a == "--ratio") {
@@ -263,16 +285,19 @@ int main(int argc, char** argv) {
       opt.target.kind = vrs::TargetKind::Ratio;
       ++targets;
     } else if (a == "--faces") {
+      if (not_ratio.empty()) not_ratio = a;
       if (!(v = value()) || !parse_count(v, opt.target.faces))
         return usage_error("--faces needs a count");
       opt.target.kind = vrs::TargetKind::Faces;
       ++targets;
     } else if (a == "--vertices") {
+      if (not_ratio.empty()) not_ratio = a;
       if (!(v = value()) || !parse_count(v, opt.target.vertices))
         return usage_error("--vertices needs a count");
       opt.target.kind = vrs::TargetKind::Vertices;
       ++targets;
     } else if (a == "--max-factor") {
+      if (not_ratio.empty()) not_ratio = a;
       if (!(v = value()) || !parse_double(v, opt.target.max_factor))
         return usage_error("--max-factor needs a number >= 0");
       opt.target.kind = vrs::TargetKind::MaxFactor;
@@ -334,8 +359,9 @@ int main(int argc, char** argv) {
   if (tiled.memory || !tiled.scheduler.empty()) {
     const uint64_t faces = vrs_tool::estimate_faces(in);
     if (!tiled.scheduler.empty() || !vrs::tiled::fits_in_core(faces, tiled.memory)) {
-      if (targets > 1 || opt.target.kind != vrs::TargetKind::Ratio || max_error > 0)
-        return usage_error("tiled runs (--memory, --scheduler) take --ratio only");
+      if (!not_ratio.empty())
+        return usage_error("tiled runs (--memory, --scheduler) take --ratio only, not " +
+                           not_ratio);
       if (!not_tiled.empty())
         return usage_error("tiled runs (--memory, --scheduler) do not take " + not_tiled +
                            " yet; without --memory the run is in core");

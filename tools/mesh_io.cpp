@@ -86,9 +86,10 @@ LoadResult load(const std::string& path) {
     delete doc;
     return r;
   }
-  // STL stores a triangle soup: its corners must be merged to have any topology at all.
+  // STL stores a triangle soup: its corners must be merged to have any topology at all. A face
+  // merged into a degenerate one stays: the core drops and counts it, as for every format.
   if (ends_with(path, ".stl")) {
-    vcg::tri::Clean<VcgMesh>::RemoveDuplicateVertex(doc->mesh);
+    vcg::tri::Clean<VcgMesh>::RemoveDuplicateVertex(doc->mesh, /*RemoveDegenerateFlag=*/false);
     vcg::tri::Allocator<VcgMesh>::CompactEveryVector(doc->mesh);
   }
   r.doc = doc;

@@ -21,6 +21,6 @@ ms.load_new_mesh(source)
 # Parameters are the filter dialog's, lowercased: targetfacenum, targetperc, targetvertnum,
 # maxfactor, autostop, mode, priority, intervals, preserveboundary, selected, autoclean, lodlevels.
 result = ms.apply_filter("meshing_decimation_vertex_removal", targetperc=0.1, preserveboundary=True)
-print(f"{result['input_faces']} -> {result['output_faces']} faces in {result['seconds']:.3f} s, "
+print(f"{result['input_faces']} -> {result['output_faces']} faces in {result['seconds_simplify']:.3f} s, "
       f"stopped: {STOP_REASONS[result['stop_reason']]}")
 ms.save_current_mesh(destination)

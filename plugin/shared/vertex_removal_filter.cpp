@@ -57,7 +57,7 @@ QString lod_label(const QString& base, int level) {
 struct Totals {
   size_t removed = 0, rejected[vrs::RejectCount] = {};
   size_t kept_boundary = 0, kept_nonmanifold = 0, kept_locked = 0, kept_high_valence = 0;
-  size_t kept_constrained = 0, constrained_edges = 0;
+  size_t kept_constrained = 0, constrained_edges = 0, relaxed_removals = 0;
   double max_priority = 0, seconds = 0;
   double error_bound = 0, diagonal = 0; // summed over the levels: each is bounded from the last
   bool target_reached = true, boundary_simplified = false;
@@ -138,7 +138,9 @@ Outcome Application::run(const RichParameterList& par) {
   r["input_vertices"] = count(input_vertices);
   r["output_faces"] = source->cm.fn;
   r["output_vertices"] = source->cm.vn;
-  r["removed_vertices"] = count(totals_.removed);
+  // The CLI's JSON and the numpy API's keys (docs/report.md); nested groups flattened
+  // (rejected_fold, kept_boundary, ...): pymeshlab takes flat numbers only.
+  r["removed"] = count(totals_.removed);
   r["levels"] = levels;
   r["stop_reason"] = int(totals_.stop);
   r["target_reached"] = totals_.target_reached;
@@ -148,14 +150,15 @@ Outcome Application::run(const RichParameterList& par) {
     r[std::string("rejected_") + vrs::reject_name(vrs::Reject(i))] = count(totals_.rejected[i]);
     rejected += totals_.rejected[i];
   }
-  r["rejected_removals"] = count(rejected);
+  r["rejected_total"] = count(rejected);
   r["kept_boundary"] = count(totals_.kept_boundary);
   r["kept_nonmanifold"] = count(totals_.kept_nonmanifold);
   r["kept_locked"] = count(totals_.kept_locked);
   r["kept_high_valence"] = count(totals_.kept_high_valence);
   r["kept_constrained"] = count(totals_.kept_constrained);
   r["constrained_edges"] = count(totals_.constrained_edges);
-  r["max_priority"] = totals_.max_priority;
+  r["max_removed_factor"] = totals_.max_priority;
+  r["relaxed_removals"] = count(totals_.relaxed_removals);
   // With MaxError: the certified bound of the last level against the input (mesh units, and
   // in % of the input's diagonal). Without, no key: a bound not tracked is never "0".
   if (s.max_error > 0) {
@@ -163,7 +166,7 @@ Outcome Application::run(const RichParameterList& par) {
     r["error_bound_percent"] =
         totals_.diagonal > 0 ? 100.0 * totals_.error_bound / totals_.diagonal : 0.0;
   }
-  r["seconds"] = totals_.seconds;
+  r["seconds_simplify"] = totals_.seconds;
   out.ok = true;
   return out;
 }
@@ -216,6 +219,7 @@ QString Application::simplify_layer(MeshModel& m, const FilterSettings& s, int l
   totals_.kept_locked += r.kept_locked;
   totals_.kept_high_valence += r.kept_high_valence;
   totals_.kept_constrained += r.kept_constrained;
+  totals_.relaxed_removals += r.relaxed_removals;
   totals_.constrained_edges = std::max(totals_.constrained_edges, r.constrained_edges);
   totals_.max_priority = std::max(totals_.max_priority, r.max_removed_factor);
   totals_.error_bound += r.error_bound;

@@ -27,14 +27,9 @@ struct Host {
 };
 
 // The values a run hands back (pymeshlab returns them as a dict; only numbers and booleans
-// survive its conversion): input_faces, input_vertices, output_faces, output_vertices,
-// removed_vertices, levels, stop_reason (vrs::StopReason as a number: 0 target reached, 1 max
-// priority, 2 last interval, 3 no candidates left, 4 cancelled), target_reached,
-// rejected_removals and rejected_<reason> for each vrs::Reject, kept_boundary,
-// kept_nonmanifold, kept_locked, kept_high_valence, kept_constrained (vertices kept by seams
-// and creases) (summed over LOD levels), constrained_edges (seam and crease edges of the
-// input), max_priority (the
-// largest priority of a removed vertex, mesh units), seconds (core time).
+// survive its conversion): the report's keys of the CLI's JSON and the numpy API
+// (docs/report.md), the groups flattened (rejected_<veto>, kept_<rule>), stop_reason as
+// vrs::StopReason's number, summed over LOD levels, plus levels.
 using FilterResult = std::map<std::string, QVariant>;
 
 struct Outcome {

@@ -3,6 +3,7 @@
 // through their strides straight into the core's mesh (the one copy an in-place core needs,
 // which also leaves the caller's arrays untouched); the run releases the GIL; Ctrl-C and the
 // progress callback are served from the progress hook, which takes the GIL back briefly.
+#include <chrono>
 #include <cmath>
 #include <cstdint>
 #include <optional>
@@ -94,8 +95,10 @@ std::vector<int64_t> signed_indices(const std::vector<uint32_t>& v) {
   return out;
 }
 
-nb::dict report_dict(const vrs::Report& r, bool bounded) {
+// The report, with the CLI's JSON keys (docs/report.md is the table of them all).
+nb::dict report_dict(const vrs::Report& r, bool bounded, double seconds, double diagonal) {
   nb::dict d, rejected, kept, input;
+  d["ok"] = r.ok;
   d["stop_reason"] = vrs::stop_reason_name(r.stop);
   d["target_reached"] = r.target_reached;
   d["stop_detail"] = r.stop_detail;
@@ -108,6 +111,7 @@ nb::dict report_dict(const vrs::Report& r, bool bounded) {
   for (int i = 0; i < vrs::RejectCount; ++i)
     rejected[vrs::reject_name(vrs::Reject(i))] = r.rejected[i];
   d["rejected"] = rejected;
+  d["rejected_total"] = r.rejected_total();
   kept["boundary"] = r.kept_boundary;
   kept["nonmanifold"] = r.kept_nonmanifold;
   kept["locked"] = r.kept_locked;
@@ -125,6 +129,10 @@ nb::dict report_dict(const vrs::Report& r, bool bounded) {
   d["max_removed_factor"] = r.max_removed_factor;
   // Not tracked: None, never 0.0 (which would read "no error at all").
   d["error_bound"] = bounded ? nb::object(nb::float_(r.error_bound)) : nb::none();
+  d["error_bound_percent"] =
+      bounded ? nb::object(nb::float_(diagonal > 0 ? 100.0 * r.error_bound / diagonal : 0.0))
+              : nb::none();
+  d["seconds_simplify"] = seconds;
   return d;
 }
 
@@ -220,10 +228,14 @@ nb::tuple simplify(AnyArray vertices, AnyArray faces, const std::string& target_
   };
 
   vrs::Report report;
+  const double diagonal = vrs::bounding_box_diagonal(mesh);
+  const auto t0 = std::chrono::steady_clock::now();
   {
     nb::gil_scoped_release release;
     report = vrs::simplify(mesh, opt);
   }
+  const double seconds =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
   if (python_error) throw nb::python_error(); // KeyboardInterrupt, or the callback's error
   if (!report.ok) throw nb::value_error(report.message.c_str());
 
@@ -235,7 +247,7 @@ nb::tuple simplify(AnyArray vertices, AnyArray faces, const std::string& target_
                         to_numpy(std::move(vertex_map), {m}),
                         to_numpy(signed_indices(report.face_source), {f}),
                         to_numpy(signed_indices(report.corner_source), {f, 3}),
-                        report_dict(report, opt.max_error > 0));
+                        report_dict(report, opt.max_error > 0, seconds, diagonal));
 }
 
 } // namespace

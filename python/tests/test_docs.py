@@ -21,3 +21,27 @@ def test_result_documents_its_fields():
         line = next(l for l in source.splitlines() if l.strip().startswith(f"{field.name}:"))
         after = source[source.index(line) + len(line):].lstrip()
         assert after.startswith('"""'), f"Result.{field.name} has no docstring"
+
+
+def test_one_report_in_python_and_the_cli(tmp_path):
+    """The numpy API's report has exactly the keys Report types; the CLI's JSON the same ones
+    (plus its total time; the bound's keys only when tracked)."""
+    import json
+    import subprocess
+
+    import numpy as np
+    import trimesh
+
+    m = trimesh.creation.icosphere(subdivisions=3)
+    r = vrsimplify.simplify(np.asarray(m.vertices), np.asarray(m.faces), ratio=0.3)
+    typed = set(vrsimplify.Report.__annotations__)
+    assert set(r.report) == typed
+    assert r.report["error_bound"] is None and r.report["error_bound_percent"] is None
+    m.export(tmp_path / "in.ply")
+    for extra, bound in (([], False), (["--error-bound"], True)):
+        out = subprocess.run(["vrsimplify", str(tmp_path / "in.ply"), str(tmp_path / "out.ply"),
+                              "--ratio", "0.3", "--json", *extra],
+                             capture_output=True, text=True, check=True).stdout
+        keys = set(json.loads(out)) - {"seconds_total"}
+        expected = typed - (set() if bound else {"error_bound", "error_bound_percent"})
+        assert keys == expected, (keys ^ expected)

@@ -10,14 +10,51 @@ through ``Result.vertex_map``, per-face and per-corner data through ``face_sourc
 from __future__ import annotations
 
 import dataclasses
-from typing import Callable, Optional, Union
+from typing import Callable, Optional, TypedDict, Union
 
 import numpy as np
 
 from . import _core
 
 __version__: str = _core.__version__
-__all__ = ["simplify", "Result", "bounding_box_diagonal"]
+__all__ = ["simplify", "Result", "Report", "bounding_box_diagonal"]
+
+
+class Report(TypedDict):
+    """What a run did: the same keys as the CLI's JSON and pymeshlab's dict (the documentation's
+    report table)."""
+
+    ok: bool
+    input_vertices: int
+    input_faces: int
+    output_vertices: int
+    output_faces: int
+    removed: int
+    stop_reason: str
+    """"target_reached", "max_factor", "last_interval", "no_candidates", "cancelled" or
+    "error_bound"."""
+    target_reached: bool
+    stop_detail: str
+    """When the target was not reached: what keeps the remaining vertices, in words."""
+    message: str
+    """Warnings about the input (empty if none)."""
+    rejected: dict[str, int]
+    """Refused removals by veto (fold, edge_exists, triangle_exists, flip, degenerate,
+    fold_over, error_bound)."""
+    rejected_total: int
+    kept: dict[str, int]
+    """Vertices kept by rule (boundary, nonmanifold, locked, high_valence, constrained)."""
+    constrained_edges: int
+    input_issues: dict[str, int]
+    """degenerate_faces (dropped), nonfinite_vertices, unreferenced_vertices (kept),
+    reoriented_faces."""
+    relaxed_removals: int
+    boundary_simplified: bool
+    max_removed_factor: float
+    error_bound: Optional[float]
+    """The certified symmetric Hausdorff bound in mesh units; None unless tracked."""
+    error_bound_percent: Optional[float]
+    seconds_simplify: float
 
 
 @dataclasses.dataclass(frozen=True)
@@ -36,7 +73,7 @@ class Result:
     corner_source: np.ndarray
     """(k, 3) int64: for each output corner the input corner (3 * face + corner) whose
     per-corner data (UVs, normals) it takes: the same vertex, on the same side of every seam."""
-    report: dict
+    report: Report
     """What the run did: counts, `stop_reason` as text, `target_reached`, `error_bound` (mesh
     units; None unless a bound was tracked), `boundary_simplified`, `relaxed_removals`,
     `stop_detail`, warnings in `message` (see the report table in the documentation)."""
