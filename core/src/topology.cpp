@@ -24,6 +24,17 @@ void Topology::build(const std::vector<uint32_t>& triangles, size_t vertex_count
     uint32_t v = triangles[i];
     pool_[first_[v] + count_[v]++] = static_cast<uint32_t>(i / 3);
   }
+  is_hub_.assign(vertex_count, 0);
+  hubs_.clear();
+  for (uint32_t v = 0; v < vertex_count; ++v)
+    if (count_[v] > kHubFaces) {
+      is_hub_[v] = 1;
+      hubs_.push_back({v, {}});
+      Hub& h = hubs_.back();
+      h.at.reserve(count_[v]);
+      for (uint32_t i = 0; i < count_[v]; ++i)
+        h.at[pool_[first_[v] + i]] = i;
+    }
 }
 
 void Topology::grow(uint32_t v) {
@@ -46,6 +57,19 @@ void Topology::add_face(uint32_t v, uint32_t face) {
 void Topology::remove_face(uint32_t v, uint32_t face) {
   uint32_t* s = pool_.data() + first_[v];
   uint32_t n = count_[v];
+  if (is_hub_[v]) {
+    Hub& h = hub(v);
+    const auto it = h.at.find(face);
+    if (it == h.at.end()) return;
+    const uint32_t i = it->second;
+    h.at.erase(it);
+    if (i != n - 1) {
+      s[i] = s[n - 1];
+      h.at[s[i]] = i;
+    }
+    --count_[v];
+    return;
+  }
   for (uint32_t i = 0; i < n; ++i) {
     if (s[i] == face) {
       // Keep the order: rings are built from it and the output must be deterministic.
