@@ -22,7 +22,8 @@ namespace {
 
 const char* kUsage =
     "usage: vrsimplify INPUT OUTPUT [target] [options]\n"
-    "  files: .ply (ascii or binary), .off, .obj, .stl\n"
+    "  files: .ply (ascii or binary), .off, .obj, .stl; OUTPUT - writes the input's format to\n"
+    "  standard output (the report then goes to standard error)\n"
     "target (one; default --ratio 0.5):\n"
     "  --ratio R          keep R (0..1) of the input faces\n"
     "  --faces N          stop at N faces or fewer\n"
@@ -334,7 +335,7 @@ int main(int argc, char** argv) {
       if (!(v = value()) || !parse_count(v, n) || n > (1u << 20))
         return usage_error("--intervals needs a count");
       opt.intervals = static_cast<int>(n);
-    } else if (!a.empty() && a[0] == '-') {
+    } else if (a.size() > 1 && a[0] == '-') { // "-" alone: standard output
       return usage_error("unknown option " + a);
     } else if (in.empty()) {
       in = a;
@@ -347,8 +348,29 @@ int main(int argc, char** argv) {
   }
   if (in.empty() || out.empty()) return usage_error("INPUT and OUTPUT are required");
   if (targets > 1) return usage_error("give at most one target");
+  // "-": the mesh to standard output, in the input's format (binary PLY with --ascii unset),
+  // written to a temporary file first; the report then goes to standard error.
+  const bool to_stdout = out == "-";
+  std::string stdout_file;
+  if (to_stdout) {
+    const size_t dot = in.rfind('.');
+    const std::string ext = dot == std::string::npos ? "" : in.substr(dot);
+    if (!writable("x" + ext))
+      return usage_error("OUTPUT - writes the input's format, and " + in + " has none it writes");
+    if (tiled.memory || !tiled.scheduler.empty())
+      return usage_error("tiled runs (--memory, --scheduler) write a file, not standard output");
+    const char* tmpdir = std::getenv("TMPDIR");
+    stdout_file = std::string(tmpdir && *tmpdir ? tmpdir : "/tmp") + "/vrsimplify-stdout-" +
+                  std::to_string(getpid()) + ext;
+    out = stdout_file;
+  }
   if (!writable(out))
     return usage_error("cannot write " + out + ": the output must end in .ply, .off, .obj or .stl");
+  const int mesh_fd = to_stdout ? dup(STDOUT_FILENO) : -1;
+  if (to_stdout) {
+    std::fflush(stdout);
+    dup2(STDERR_FILENO, STDOUT_FILENO); // the report, and anything else printed, to stderr
+  }
   if (max_error > 0 && targets == 0) { // the bound alone: as far as it allows
     opt.target.kind = vrs::TargetKind::Faces;
     opt.target.faces = 0;
@@ -381,14 +403,15 @@ int main(int argc, char** argv) {
   vrs::Mesh mesh = vrs_tool::to_core(*loaded.doc);
   // A PLY's double coordinates, or an ascii output: the input's vertex records are kept aside
   // (vcglib's mesh holds float, and prints 6 digits), the core sees the doubles.
-  const vrs_tool::ExactVertices exact(in, ascii);
+  const vrs_tool::ExactVertices exact(in, out, ascii);
   if (exact.has_double_positions()) {
     if (!exact.core_positions(mesh.vertex_count(), mesh.positions))
-      std::fprintf(stderr, "vrsimplify: note: double coordinates read as float\n");
-    else if (out.size() < 4 || strcasecmp(out.c_str() + out.size() - 4, ".ply") != 0)
       std::fprintf(stderr,
-                   "vrsimplify: note: the input has double coordinates; %s holds "
-                   "float ones (write .ply to keep them exact)\n",
+                   "vrsimplify: note: coordinates beyond a float's precision read as float\n");
+    else if (!exact.needed())
+      std::fprintf(stderr,
+                   "vrsimplify: note: the input has coordinates a float cannot hold; %s is "
+                   "written with float ones (write the input's format to keep them exact)\n",
                    out.c_str());
   }
   const double diag = vrs::bounding_box_diagonal(mesh);
@@ -422,6 +445,21 @@ int main(int argc, char** argv) {
   if (!err.empty()) {
     std::fprintf(stderr, "vrsimplify: %s\n", err.c_str());
     return 3;
+  }
+  if (to_stdout) { // the mesh, whole, to the real standard output
+    std::FILE* f = std::fopen(stdout_file.c_str(), "rb");
+    char buf[1 << 16];
+    size_t n;
+    bool ok = f != nullptr;
+    while (ok && (n = std::fread(buf, 1, sizeof buf, f)) > 0)
+      ok = write(mesh_fd, buf, n) == ssize_t(n);
+    if (f) std::fclose(f);
+    std::remove(stdout_file.c_str());
+    close(mesh_fd);
+    if (!ok) {
+      std::fprintf(stderr, "vrsimplify: cannot write to standard output\n");
+      return 3;
+    }
   }
   const double seconds_total = std::chrono::duration<double>(clock::now() - t0).count();
   if (json)

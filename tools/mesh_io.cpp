@@ -201,8 +201,8 @@ std::string save(VcgDocument& doc, const std::string& path, bool ascii, const Ex
     sigaddset(&hold, sig);
   sigprocmask(SIG_BLOCK, &hold, &before);
   std::string err = write_as(doc, tmp, ascii);
-  if (err.empty() && exact && kept && exact->needed() && ends_with(path, ".ply")) {
-    const std::string vertices = tmp + ".vertices.ply";
+  if (err.empty() && exact && kept && exact->needed()) {
+    const std::string vertices = tmp + ".exact";
     err = exact->rewrite(tmp, vertices, *kept);
     std::remove(tmp.c_str());
     if (err.empty() && std::rename(vertices.c_str(), path.c_str()) != 0) err = std::strerror(errno);

@@ -4,7 +4,9 @@ y ~ 4 100 000 m: a float would step by 0.25-0.5 m), colors and a quality, writte
 little- and big-endian and ascii PLY (17 digits), and a float ascii PLY (9 digits), through the
 CLI in core (binary and --ascii output) and tiled (--memory): each output vertex's values, as
 their declared types, are one input vertex's; the target is reached in core (the core sees the
-doubles, not float-rounded ones); an output that cannot hold doubles says so.
+doubles, not float-rounded ones). The same terrain as OBJ and OFF with 17 digits, and the
+double PLY written as OBJ and OFF: every output coordinate triple, read as doubles, is an input
+vertex's (an OBJ's v line is the input's, as written). STL (float) says so.
 
     test_exact_coordinates.py VRSIMPLIFY OUT_DIR
 """
@@ -123,10 +125,43 @@ for label, src in inputs.items():
               if exact else f"layout {got_props} vs {ref_props}")
         if run.startswith("in core"):
             check(f"{label} / {run} target", '"target_reached":true' in r.stdout, "the target reached")
-# A format that cannot hold doubles says so.
-r = subprocess.run([vrs, str(inputs["ascii"]), str(out / "t.off"), "--ratio", "0.1"],
+# Text formats: 17 digits in, the same coordinates out (and from the double PLY).
+xyz = {(a, b, c) for a, b, c in zip(x.tolist(), y.tolist(), z.tolist())}
+(out / "terrain.obj").write_text("".join(f"v {a!r} {b!r} {c!r}\n" for a, b, c in zip(x.tolist(), y.tolist(), z.tolist()))
+                                 + "".join(f"f {a + 1} {b + 1} {c + 1}\n" for a, b, c in faces))
+(out / "terrain.off").write_text(f"OFF\n{len(x)} {len(faces)} 0\n"
+                                 + "".join(f"{a!r} {b!r} {c!r}\n" for a, b, c in zip(x.tolist(), y.tolist(), z.tolist()))
+                                 + "".join(f"3 {a} {b} {c}\n" for a, b, c in faces))
+obj_lines = set((out / "terrain.obj").read_text().splitlines())
+
+
+def text_vertices(path):
+    lines = [l for l in path.read_text().splitlines() if l.strip()]
+    if path.suffix == ".obj":
+        return [l for l in lines if l.startswith("v ")]
+    words = lines[1].split() if len(lines[0].split()) == 1 else lines[0].split()[1:]
+    start = 2 if len(lines[0].split()) == 1 else 1
+    return lines[start:start + int(words[0])]
+
+
+for src in (out / "terrain.obj", out / "terrain.off", inputs["binary_little_endian"], inputs["ascii"]):
+    for ext in (".obj", ".off"):
+        dst = out / f"text-{src.stem}{ext}"
+        r = subprocess.run([vrs, str(src), str(dst), "--ratio", "0.1", "--json"], capture_output=True, text=True)
+        if r.returncode != 0:
+            check(f"{src.name} to {ext}", False, r.stderr.strip())
+            continue
+        rows = text_vertices(dst)
+        coords = [tuple(float(w) for w in (l.split()[1:4] if ext == ".obj" else l.split()[:3])) for l in rows]
+        exact = bool(rows) and all(c in xyz for c in coords)
+        if src.suffix == ".obj" and ext == ".obj":
+            exact = exact and all(l in obj_lines for l in rows)  # the input's own lines
+        check(f"{src.name} to {ext}", exact and '"target_reached":true' in r.stdout,
+              f"{len(rows)} vertices, every coordinate an input's, the target reached")
+# A format that cannot hold them says so.
+r = subprocess.run([vrs, str(inputs["ascii"]), str(out / "t.stl"), "--ratio", "0.1"],
                    capture_output=True, text=True)
-check("double input to .off", r.returncode == 0 and "double coordinates" in r.stderr, r.stderr.strip())
+check("double input to .stl", r.returncode == 0 and "float cannot hold" in r.stderr, r.stderr.strip())
 # The check can fail: one changed bit in one output vertex is found.
 bad, _ = read_vertices(out / "terrain-binary_little_endian-incore-binary.ply")
 bad = bad.copy()
