@@ -213,6 +213,13 @@ expect_exit 2 "--json takes no value" "$bin" "$in" "$out/never.ply" --json=yes
 "$bin" "$in" "$out/never.ply" --frobnicate >/dev/null 2>"$out/e"
 [ "$(wc -l <"$out/e")" = 1 ] && grep -q "see vrsimplify --help" "$out/e" && ok ||
   fail "a usage error is one line with a pointer to --help: $(cat "$out/e")"
+# OUTPUT -: the input's format on standard output, byte for byte the file run, the report on
+# standard error; nothing left in the temporary folder.
+"$bin" "$in" - --ratio 0.1 --json >"$out/stdout.off" 2>"$out/stdout.json" &&
+  "$bin" "$in" "$out/file.off" --ratio 0.1 >/dev/null && cmp -s "$out/stdout.off" "$out/file.off" &&
+  grep -q '"output_faces":' "$out/stdout.json" && [ -z "$(ls "${TMPDIR:-/tmp}"/vrsimplify-stdout-* 2>/dev/null)" ] && ok ||
+  fail "OUTPUT -: $(head -c 200 "$out/stdout.json")"
+expect_exit 2 "write a file, not standard output" "$bin" "$in" - --ratio 0.1 --memory 1M
 # The output's format first: with an input that does not even exist, the complaint is the output.
 expect_exit 2 "must end in .ply, .off, .obj or .stl" "$bin" "$out/missing.off" "$out/never.glb"
 [ ! -e "$out/never.glb" ] && ok || fail "an output of an unknown format was written"
