@@ -88,7 +88,8 @@ def main():
             args = shlex.split(command)
             if any(a.startswith(("IN", "OUT", "[")) or "..." in a for a in args):
                 continue  # a synopsis, not a command
-            r = subprocess.run(args, capture_output=True, text=True)
+            # As a reader types it: through the shell (redirections included).
+            r = subprocess.run(["bash", "-c", command], capture_output=True, text=True)
             if cluster:
                 cluster.close()
             ran += 1
