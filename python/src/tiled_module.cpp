@@ -20,6 +20,7 @@ nb::dict level_dict(const vrs::tiled::Level& l) {
   d["faces"] = l.faces;
   d["target"] = l.target;
   d["ratio"] = l.ratio;
+  d["serial"] = l.serial;
   return d;
 }
 
@@ -30,6 +31,7 @@ vrs::tiled::Level level_of(const nb::dict& d) {
   l.faces = nb::cast<uint64_t>(d["faces"]);
   l.target = nb::cast<uint64_t>(d["target"]);
   l.ratio = nb::cast<double>(d["ratio"]);
+  l.serial = d.contains("serial") && nb::cast<bool>(d["serial"]);
   return l;
 }
 

@@ -95,12 +95,15 @@ def simplify(src: Union[str, os.PathLike], dst: Union[str, os.PathLike], *, rati
                           f"keeping {level['ratio']:.3g}", file=sys.stderr)
                 if store:
                     _remote_tiles.push_level(*store, local, k, n)
-                    futures = client.map(_run_remote_tile, [store[0]] * n, [store[1]] * n,
-                                         [k] * n, range(n), pure=False, retries=retries)
+                    run, head = _run_remote_tile, [store[0], store[1]]
                 else:
-                    futures = client.map(_run_tile, [local] * n, [k] * n, range(n),
-                                         pure=False, retries=retries)
-                client.gather(futures)
+                    run, head = _run_tile, [local]
+                if level.get("serial"):  # tiles of the whole budget: one at a time
+                    for tile in range(n):
+                        client.submit(run, *head, k, tile, pure=False, retries=retries).result()
+                else:
+                    client.gather(client.map(run, *[[h] * n for h in head], [k] * n, range(n),
+                                             pure=False, retries=retries))
                 if store:
                     _remote_tiles.pull_level(*store, local, k, n)
             levels.append({**level, "seconds": time.perf_counter() - t})

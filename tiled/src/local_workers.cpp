@@ -29,7 +29,8 @@ void run_level_locally(const std::string& workdir, const Level& level, int worke
                        const std::function<void()>& interrupted) {
   // 0: the machine's cores, as documented (and as the CLI counts them).
   if (workers <= 0) workers = int(std::max(1u, std::thread::hardware_concurrency()));
-  const int cores = workers; // a lone tile's threads
+  const int cores = workers;     // a lone tile's threads
+  if (level.serial) workers = 1; // tiles of the whole budget: one at a time
   workers = int(std::max<uint64_t>(1, std::min<uint64_t>({uint64_t(std::max(workers, 1)),
                                                           uint64_t(kTilesInMemory), level.tiles})));
   if (progress)

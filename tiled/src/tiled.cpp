@@ -107,6 +107,7 @@ Level level_of(const State& s) {
   l.faces = uint64_t(state_number(s, "faces"));
   l.target = uint64_t(state_number(s, "target"));
   l.ratio = s.count("done") ? state_number(s, "ratio") : keep_of(s);
+  l.serial = !s.count("done") && s.count("serial") && s.at("serial") == "1";
   return l;
 }
 
@@ -304,11 +305,12 @@ void run_tile(const std::string& dir, int level, uint64_t tile, int lone_threads
                  : size_t(std::round(keep * faces));
   // One tile is the whole mesh, nothing locked: as in core, the last resort may reach the
   // target.
-  opt.relax_to_reach_target = alone;
+  opt.relax_to_reach_target = alone || (s.count("serial") && s.at("serial") == "1");
   // A tile's cut is a border of its piece but no border of the mesh: only the whole mesh (the
   // last level, in core) judges whether the border needs simplifying.
   opt.simplify_boundary_when_needed = alone;
-  opt.threads = alone ? std::max(0, lone_threads) : 1;
+  const bool serial = s.count("serial") && s.at("serial") == "1";
+  opt.threads = alone || serial ? std::max(0, lone_threads) : 1;
   opt.locked = &locked;
   // Per-corner data: its seams are kept as in core, and each output corner takes the keys of
   // the input corner the core names.
@@ -353,8 +355,9 @@ Level next_level(const std::string& dir) {
   s["stalls"] = std::to_string(stalls);
   s["output_faces"] = num(double(faces));
   // Done: at the target, or the whole mesh was one tile (nothing left to release), or levels
-  // stopped making progress.
-  if (double(faces) <= double(target) * (1 + kSlack) + 2 || tiles == 1 || stalls >= 2 ||
+  // stopped making progress (after a stall, grown tiles get two tries: the octree's origin
+  // moves between them).
+  if (double(faces) <= double(target) * (1 + kSlack) + 2 || tiles == 1 || stalls >= 3 ||
       level >= kMaxLevels) {
     s["done"] = "1";
     write_state(dir, s);
@@ -366,7 +369,15 @@ Level next_level(const std::string& dir) {
   // What is left fits the whole budget as one tile (run alone): the last level is the
   // in-core run of it, borders and all.
   const uint64_t per_tile = uint64_t(state_number(s, "faces_per_tile"));
-  const uint64_t budget = faces <= per_tile * kTilesInMemory ? faces : per_tile;
+  // After a level that stalled, tiles take the whole budget and run one at a time: the
+  // octree's leaves hold an eighth of a budget to a budget, and where the leaves were small
+  // their locked borders kept the rest from going (a noisy terrain in tiles of 1 310 faces
+  // stalled at 4 times its target).
+  const bool grow = stalls > 0 && faces > per_tile * kTilesInMemory;
+  const uint64_t budget = faces <= per_tile * kTilesInMemory ? faces
+                          : grow                             ? per_tile * kTilesInMemory
+                                                             : per_tile;
+  s["serial"] = grow ? "1" : "0";
   s["tiles"] =
       num(double(partition(dir, level + 1, uint64_t(state_number(s, "vertices")), box_of(s), budget,
                            keyed, level_outputs(dir, level, tiles, keyed))));

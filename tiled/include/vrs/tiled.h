@@ -30,6 +30,8 @@ struct Level {
   uint64_t faces = 0;  // faces entering the level
   uint64_t target = 0; // faces wanted in the end
   double ratio = 1.0;  // what each tile keeps at this level
+  // Tiles of up to the whole budget (a level after one that stalled): run one at a time.
+  bool serial = false;
 };
 
 // "" when a tiled run can write `output` from `input`, else why not: a tiled run writes the
