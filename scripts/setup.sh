@@ -30,8 +30,9 @@ want=(build-essential cmake pkg-config git xz-utils libgtest-dev libgmock-dev li
       # the newer MeshLabs: their sources through a separate apt configuration, their GUIs in
       # debootstrap roots, pymeshlab in a virtual environment
       dpkg-dev debootstrap python3-venv
-      # Python's headers for the package's extension module
-      python3-dev)
+      # Python's headers for the package's extension module, and what the CPython 3.13 that
+      # builds the stable-ABI wheel needs (scripts/lib/cpython.sh: ssl, zlib, ctypes, lzma, bz2)
+      python3-dev libssl-dev zlib1g-dev libffi-dev libbz2-dev liblzma-dev)
 want+=("$@")
 missing=()
 for p in "${want[@]}"; do
