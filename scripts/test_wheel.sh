@@ -59,10 +59,16 @@ if [ -x "$root/usr/bin/python3.14" ]; then
   cp /etc/ssl/certs/ca-certificates.crt "$root$inside/ca.crt"
   cp "$(dirname "$("$top/scripts/lib/cpython.sh")")"/../lib/python3.13/ensurepip/_bundled/pip-*.whl "$root$inside/"
   pipwhl=$(basename "$(ls "$root$inside"/pip-*.whl)")
+  # pip inside uses the index this machine's pip is configured with (file and environment).
+  pip_env=""
+  [ -f /etc/pip.conf ] && cp /etc/pip.conf "$root$inside/pip.conf" && pip_env="PIP_CONFIG_FILE=$inside/pip.conf"
+  for var in PIP_INDEX_URL PIP_EXTRA_INDEX_URL PIP_TRUSTED_HOST; do
+    [ -n "${!var:-}" ] && pip_env="$pip_env $var=${!var}"
+  done
   cat >"$root$inside/run.sh" <<RUN
 set -e
 cd $inside
-export PIP_CERT=$inside/ca.crt PIP_DISABLE_PIP_VERSION_CHECK=1 QT_QPA_PLATFORM=offscreen VRS_REQUIRE_PYMESHLAB=1
+export PIP_CERT=$inside/ca.crt PIP_DISABLE_PIP_VERSION_CHECK=1 QT_QPA_PLATFORM=offscreen VRS_REQUIRE_PYMESHLAB=1 $pip_env
 python3.14 -m venv --without-pip venv
 venv/bin/python $pipwhl/pip install -q $(basename "$abi3") ${pins[*]} pip
 venv/bin/python -c "import vrsimplify; print('cp314 import ok', vrsimplify.__version__)"
