@@ -209,9 +209,9 @@ TEST(Tiled, ClosedMeshInManyTilesStaysWatertightAndKeepsInputVertices) {
 }
 
 // A noisy height field cut into tiles of 1 310 faces: where the octree's small leaves stall
-// against their locked borders, the next level's tiles take the whole budget (one at a time),
-// and the run reaches its target as in core (it stalled at 4 times the target). Not always:
-// with tiles of 1 250 faces the same mesh still stops at 1.9 times it, and says so.
+// against their locked borders, the next level's tiles are halves of up to a lone tile's
+// budget (one at a time), and the run reaches its target as in core (it stalled at 4 times
+// the target).
 TEST(Tiled, SmallTilesThatStallGrowAndReachTheTarget) {
   const std::string dir = temp_dir();
   vrs::Mesh m = vrs_test::grid(119); // 120 x 120 vertices

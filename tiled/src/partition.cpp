@@ -33,7 +33,7 @@ size_t fine_cell(const Box& box, const FaceRecord& r) {
 // sparse. On shifted levels the octree's origin moves by `shift` fine cells, so that the
 // previous level's borders fall inside tiles. Returns fine cell -> tile (kNone: no face).
 std::vector<uint32_t> octree_tiles(const std::vector<uint32_t>& hist, uint64_t budget, int shift,
-                                   uint32_t& tiles) {
+                                   bool halves, uint32_t& tiles) {
   // Prefix sums over the shifted, padded domain [0, 128)^3 for O(1) box counts.
   constexpr int kDom = 2 * kFine, kP = kDom + 1;
   std::vector<uint64_t> pre(size_t(kP) * kP * kP, 0);
@@ -72,19 +72,60 @@ std::vector<uint32_t> octree_tiles(const std::vector<uint32_t>& hist, uint64_t b
     for (int i = 0; i < 8; ++i)
       visit(x + (i & 4 ? h : 0), y + (i & 2 ? h : 0), z + (i & 1 ? h : 0), h);
   };
-  visit(0, 0, 0, kDom);
+  // Halves: a box splits in two at the cell plane nearest its median along its longest side,
+  // so leaves hold half a budget to a budget (the octree's, an eighth to a budget).
+  auto box_count = [&](const int lo[3], const int hi[3]) {
+    return at(hi[0], hi[1], hi[2]) - at(lo[0], hi[1], hi[2]) - at(hi[0], lo[1], hi[2]) -
+           at(hi[0], hi[1], lo[2]) + at(lo[0], lo[1], hi[2]) + at(lo[0], hi[1], lo[2]) +
+           at(hi[0], lo[1], lo[2]) - at(lo[0], lo[1], lo[2]);
+  };
+  std::function<void(const int*, const int*)> halve = [&](const int* lo, const int* hi) {
+    const uint64_t c = box_count(lo, hi);
+    if (c == 0) return;
+    int axis = 0;
+    for (int a = 1; a < 3; ++a)
+      if (hi[a] - lo[a] > hi[axis] - lo[axis]) axis = a;
+    if (c <= budget || hi[axis] - lo[axis] == 1) {
+      for (int i = lo[0]; i < hi[0]; ++i)
+        for (int j = lo[1]; j < hi[1]; ++j)
+          for (int k = lo[2]; k < hi[2]; ++k) {
+            const int fx = i - shift, fy = j - shift, fz = k - shift;
+            if (fx >= 0 && fy >= 0 && fz >= 0 && fx < kFine && fy < kFine && fz < kFine)
+              tile_of[(size_t(fx) * kFine + fy) * kFine + fz] = tiles;
+          }
+      ++tiles;
+      return;
+    }
+    int cut = lo[axis] + 1;
+    for (int m = lo[axis] + 1; m < hi[axis]; ++m) {
+      int h2[3] = {hi[0], hi[1], hi[2]};
+      h2[axis] = m;
+      cut = m;
+      if (2 * box_count(lo, h2) >= c) break;
+    }
+    int mid_hi[3] = {hi[0], hi[1], hi[2]}, mid_lo[3] = {lo[0], lo[1], lo[2]};
+    mid_hi[axis] = cut, mid_lo[axis] = cut;
+    halve(lo, mid_hi);
+    halve(mid_lo, hi);
+  };
+  if (halves) {
+    const int lo[3] = {0, 0, 0}, hi[3] = {kDom, kDom, kDom};
+    halve(lo, hi);
+  } else {
+    visit(0, 0, 0, kDom);
+  }
   return tile_of;
 }
 
 } // namespace
 
 uint64_t partition(const std::string& dir, int level, uint64_t vertex_count, const Box& box,
-                   uint64_t faces_per_tile, bool keys, const FaceSource& source) {
+                   uint64_t faces_per_tile, bool keys, bool halves, const FaceSource& source) {
   std::vector<uint32_t> hist(size_t(kFine) * kFine * kFine, 0);
   source([&](const FaceRecord& r) { ++hist[fine_cell(box, r)]; });
   uint32_t tiles = 0;
   const std::vector<uint32_t> tile_of =
-      octree_tiles(hist, faces_per_tile, level % 2 == 0 ? kShift : 0, tiles);
+      octree_tiles(hist, faces_per_tile, level % 2 == 0 ? kShift : 0, halves, tiles);
   hist = {};
   auto tile = [&](const FaceRecord& r) { return tile_of[fine_cell(box, r)]; };
 

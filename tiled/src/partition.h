@@ -23,8 +23,9 @@ struct Box {
 using FaceSource = std::function<void(const std::function<void(const FaceRecord&)>&)>;
 
 // Writes L<level>/<tile>.in for every non-empty tile (records with keys or short ones);
-// returns the number of tiles.
+// returns the number of tiles. `halves`: boxes split in two at the median instead of the
+// octree's eight (leaves of half a budget to a budget; for the levels after a stall).
 uint64_t partition(const std::string& dir, int level, uint64_t vertex_count, const Box& box,
-                   uint64_t faces_per_tile, bool keys, const FaceSource& source);
+                   uint64_t faces_per_tile, bool keys, bool halves, const FaceSource& source);
 
 } // namespace vrs::tiled

@@ -30,6 +30,14 @@ constexpr double kSlack = 0.005; // done within half a per cent of the target
 // 0.5 measured best of 0.25, 0.5, 0.7 and 0.9 (max error at 1 % on two bunnies and a terrain).
 constexpr double kLastRoom = 0.5;
 
+// The faces one tile may hold when it runs alone, with the whole budget: three quarters of
+// kTilesInMemory tiles' worth, since a lone tile runs on every core (measured 245 bytes a face
+// at the peak of a lone tile of 600 k faces, against the 200 a tile is cut for: a colored scan
+// at 10 % peaked at 148 MB for a budget of 120 MB with the whole four tiles' worth).
+uint64_t lone_faces(uint64_t per_tile) {
+  return per_tile * kTilesInMemory * 3 / 4;
+}
+
 std::string num(double v) {
   char b[64];
   std::snprintf(b, sizeof b, "%.17g", v);
@@ -235,8 +243,8 @@ Level begin(const std::string& input, const Settings& settings) {
     if (f) std::fclose(f);
     if (got != vertices) throw std::runtime_error("cannot read back " + dir + "/vertices.bin");
     // A mesh that fits the whole budget is one tile at once (what the last level would be).
-    const uint64_t budget = faces <= per_tile * kTilesInMemory ? faces : per_tile;
-    s["tiles"] = num(double(partition(dir, 1, vertices, box, budget, bool(kout),
+    const uint64_t budget = faces <= lone_faces(per_tile) ? faces : per_tile;
+    s["tiles"] = num(double(partition(dir, 1, vertices, box, budget, bool(kout), false,
                                       input_faces(dir, positions, bool(kout)))));
   }
   // In the tiles now; the disk is the next level's.
@@ -369,18 +377,18 @@ Level next_level(const std::string& dir) {
   // What is left fits the whole budget as one tile (run alone): the last level is the
   // in-core run of it, borders and all.
   const uint64_t per_tile = uint64_t(state_number(s, "faces_per_tile"));
-  // After a level that stalled, tiles take the whole budget and run one at a time: the
-  // octree's leaves hold an eighth of a budget to a budget, and where the leaves were small
-  // their locked borders kept the rest from going (a noisy terrain in tiles of 1 310 faces
-  // stalled at 4 times its target).
-  const bool grow = stalls > 0 && faces > per_tile * kTilesInMemory;
-  const uint64_t budget = faces <= per_tile * kTilesInMemory ? faces
-                          : grow                             ? per_tile * kTilesInMemory
-                                                             : per_tile;
+  // After a level that stalled, tiles are halves of up to a lone tile's budget (the octree's
+  // leaves hold an eighth of a budget to a budget, and where the leaves were small their
+  // locked borders kept the rest from going: a noisy terrain in tiles of 1 310 faces stalled
+  // at 4 times its target) and run one at a time.
+  const bool grow = stalls > 0 && faces > lone_faces(per_tile);
+  const uint64_t budget = faces <= lone_faces(per_tile) ? faces
+                          : grow                        ? lone_faces(per_tile)
+                                                        : per_tile;
   s["serial"] = grow ? "1" : "0";
   s["tiles"] =
       num(double(partition(dir, level + 1, uint64_t(state_number(s, "vertices")), box_of(s), budget,
-                           keyed, level_outputs(dir, level, tiles, keyed))));
+                           keyed, grow, level_outputs(dir, level, tiles, keyed))));
   write_state(dir, s);
   remove_tree(dir + "/L" + std::to_string(level));
   return level_of(s);
