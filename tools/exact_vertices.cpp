@@ -11,6 +11,7 @@
 #include <memory>
 
 #include "mesh_stream.h"
+#include "output_file.h"
 
 namespace vrs_tool {
 
@@ -139,16 +140,8 @@ bool beyond_float(const std::string& token) {
 
 } // namespace
 
-std::string format_of(const std::string& path) {
-  const size_t dot = path.rfind('.');
-  std::string ext = dot == std::string::npos ? "" : path.substr(dot + 1);
-  for (char& c : ext)
-    c = char(std::tolower((unsigned char)c));
-  return ext;
-}
-
 ExactVertices::ExactVertices(const std::string& input, const std::string& output, bool ascii_output)
-    : in_format_(format_of(input)), out_format_(format_of(output)) {
+    : in_format_(vrs::tiled::format_of(input)), out_format_(vrs::tiled::format_of(output)) {
   if (in_format_ != "ply" && in_format_ != "obj" && in_format_ != "off") return;
   std::unique_ptr<std::FILE, int (*)(std::FILE*)> in(std::fopen(input.c_str(), "rb"), &std::fclose);
   if (!in) return;

@@ -3,9 +3,9 @@
 
 #include <algorithm>
 #include <array>
-#include <unordered_map>
 #include <cstddef>
 #include <cstdint>
+#include <unordered_map>
 #include <vector>
 
 namespace vrs {

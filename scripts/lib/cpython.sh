@@ -3,7 +3,7 @@
 # wheel (cp312-abi3, for CPython 3.12 and later) is built with, linked against this machine's
 # glibc so that the wheel runs wherever Debian 12 / Ubuntu 22.04 binaries do. Built once from
 # Debian trixie's source package (the orig tarball, pinned by sha256, fetched through the
-# separate apt configuration of meshlab_sources.sh) into $VRS_CACHE/cpython-3.13; prints the
+# separate apt configuration of debian_source.sh) into $VRS_CACHE/cpython-3.13; prints the
 # interpreter's path.
 #   scripts/lib/cpython.sh           -> $VRS_CACHE/cpython-3.13/bin/python3.13
 set -euo pipefail
@@ -16,21 +16,7 @@ if [ "$(cat "$prefix/.sha256" 2>/dev/null)" = "$sha" ] && [ -x "$prefix/bin/pyth
   echo "$prefix/bin/python3.13"
   exit 0
 fi
-tarball=$cache/src/$orig
-if ! echo "$sha  $tarball" | sha256sum -c --status 2>/dev/null; then
-  apt_dir=$cache/apt
-  mkdir -p "$apt_dir/lists/partial" "$apt_dir/cache/archives/partial" "$cache/src"
-  mirror=$("$here/debian_mirror.sh")
-  key=/usr/share/keyrings/debian-archive-keyring.gpg
-  printf 'deb-src [signed-by=%s] %s trixie main\ndeb-src [signed-by=%s] %s sid main\n' \
-    "$key" "$mirror" "$key" "$mirror" >"$apt_dir/sources.list"
-  opts=(-o "Dir::Etc::SourceList=$apt_dir/sources.list" -o Dir::Etc::SourceParts=/dev/null
-        -o "Dir::State::Lists=$apt_dir/lists" -o "Dir::Cache=$apt_dir/cache"
-        -o Acquire::Check-Valid-Until=false)
-  apt-get "${opts[@]}" update -qq
-  (cd "$cache/src" && apt-get "${opts[@]}" source --download-only "python3.13=$version" >/dev/null 2>&1 || true)
-  echo "$sha  $tarball" | sha256sum -c --status || { echo "cpython: $orig does not match the pinned sha256" >&2; exit 1; }
-fi
+tarball=$("$here/debian_source.sh" python3.13 "$version" "$orig" "$sha")
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 echo "cpython: building Python 3.13 into $prefix (once, a few minutes)" >&2

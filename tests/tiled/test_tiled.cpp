@@ -493,13 +493,13 @@ TEST(Tiled, WhatCannotBeCarriedIsRefusedByName) {
   std::ofstream(dir + "/colors.off") << "OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 255 0 0\n";
   EXPECT_NE(run(dir + "/colors.off", dir + "/o.off", 0.5, 1 << 30, 1).find("OFF face colors"),
             std::string::npos);
-  // Face properties that fit (a color) pass.
+  // Face properties that fit (a color and a signed byte) pass.
   std::ofstream(dir + "/rgb.ply")
       << head << "element face 1\nproperty list uchar int vertex_indices\n"
-      << "property uchar red\nproperty uchar green\nproperty uchar blue\n"
-      << "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 10 20 30\n";
+      << "property uchar red\nproperty uchar green\nproperty uchar blue\nproperty char offset\n"
+      << "end_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2 10 20 30 -5\n";
   ASSERT_EQ(run(dir + "/rgb.ply", dir + "/rgb-out.ply", 1.0, 1 << 30, 1), "");
-  EXPECT_NE(slurp(dir + "/rgb-out.ply").find("\n3 0 1 2 10 20 30\n"), std::string::npos);
+  EXPECT_NE(slurp(dir + "/rgb-out.ply").find("\n3 0 1 2 10 20 30 -5\n"), std::string::npos);
   std::ifstream o(dir + "/o.ply");
   EXPECT_FALSE(o.good()); // no output of a refused run
   vrs::tiled::discard(dir);

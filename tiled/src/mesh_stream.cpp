@@ -145,36 +145,21 @@ struct PlyReader {
   }
 };
 
+template <class T> void put(unsigned char* out, double v) {
+  const T x = T(v);
+  std::memcpy(out, &x, sizeof x);
+}
+
 // Packs a face property's value into `out` at `at` as its type (what CornerKeys::group holds).
 void pack(Type t, double v, unsigned char* out, size_t at) {
   switch (t) {
-  case Type::Int8: out[at] = uint8_t(int8_t(v)); break;
-  case Type::UInt8: out[at] = uint8_t(v); break;
-  case Type::Int16: {
-    const int16_t x = int16_t(v);
-    std::memcpy(out + at, &x, 2);
-    break;
-  }
-  case Type::UInt16: {
-    const uint16_t x = uint16_t(v);
-    std::memcpy(out + at, &x, 2);
-    break;
-  }
-  case Type::Int32: {
-    const int32_t x = int32_t(v);
-    std::memcpy(out + at, &x, 4);
-    break;
-  }
-  case Type::UInt32: {
-    const uint32_t x = uint32_t(v);
-    std::memcpy(out + at, &x, 4);
-    break;
-  }
-  case Type::Float32: {
-    const float x = float(v);
-    std::memcpy(out + at, &x, 4);
-    break;
-  }
+  case Type::Int8: put<int8_t>(out + at, v); break;
+  case Type::UInt8: put<uint8_t>(out + at, v); break;
+  case Type::Int16: put<int16_t>(out + at, v); break;
+  case Type::UInt16: put<uint16_t>(out + at, v); break;
+  case Type::Int32: put<int32_t>(out + at, v); break;
+  case Type::UInt32: put<uint32_t>(out + at, v); break;
+  case Type::Float32: put<float>(out + at, v); break;
   default: break;
   }
 }

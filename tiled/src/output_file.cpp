@@ -89,39 +89,23 @@ struct Writer {
   }
 };
 
+// A packed value as ascii PLY text: an integer of its size and sign, or a float (9 digits).
 std::string value_text(const unsigned char* p, const Packed& t) {
   char buf[48];
   if (t.kind == 'f') {
     float f;
     std::memcpy(&f, p, 4);
     std::snprintf(buf, sizeof buf, "%.9g", double(f));
-  } else if (t.kind == 'i') {
-    long long v = t.size == 1 ? int8_t(p[0]) : 0;
-    if (t.size == 2) {
-      int16_t x;
-      std::memcpy(&x, p, 2);
-      v = x;
-    }
-    if (t.size == 4) {
-      int32_t x;
-      std::memcpy(&x, p, 4);
-      v = x;
-    }
-    std::snprintf(buf, sizeof buf, "%lld", v);
-  } else {
-    unsigned long long v = t.size == 1 ? p[0] : 0;
-    if (t.size == 2) {
-      uint16_t x;
-      std::memcpy(&x, p, 2);
-      v = x;
-    }
-    if (t.size == 4) {
-      uint32_t x;
-      std::memcpy(&x, p, 4);
-      v = x;
-    }
-    std::snprintf(buf, sizeof buf, "%llu", v);
+    return buf;
   }
+  uint32_t raw = 0; // packed in this machine's order (little endian): the low bytes
+  std::memcpy(&raw, p, t.size);
+  const unsigned bits = 8 * unsigned(t.size);
+  if (t.kind == 'i' && bits < 32 && (raw >> (bits - 1)) & 1) raw |= ~0u << bits; // sign-extend
+  if (t.kind == 'i')
+    std::snprintf(buf, sizeof buf, "%d", int32_t(raw));
+  else
+    std::snprintf(buf, sizeof buf, "%u", raw);
   return buf;
 }
 
