@@ -25,10 +25,12 @@ struct OneWay {
 
 OneWay one_way(BenchMesh& sampled, BenchMesh& target, size_t samples) {
   vcg::tri::HausdorffSampler<BenchMesh> hs(&target);
-  // The grid again, over a box 1 % larger: with the faces' own box, a sample a rounding error
-  // inside its far side is mapped one cell past the grid (vcglib 2020.09 reads out of bounds
-  // and crashed on the 4.8 M-face Loop bunny).
+  // The grid over both meshes' box, 1 % larger: with the faces' own box, a sample a rounding
+  // error inside its far side is mapped one cell past the grid (vcglib 2020.09 reads out of
+  // bounds and crashed on the 4.8 M-face Loop bunny), and a sample far outside a grid of a few
+  // faces crashed its search (blob at 1 %: 3 faces).
   vcg::Box3f box = target.bbox;
+  box.Add(sampled.bbox);
   box.Offset(0.01f * box.Diag());
   hs.unifGridFace.Set(target.face.begin(), target.face.end(), box);
   hs.dist_upper_bound = std::numeric_limits<float>::max();

@@ -4,7 +4,8 @@
 # (vcglib and MeshLab's headers: 2020.09 from Debian's `meshlab` source package, 2022.02 and
 # 2025.07 from trixie's and sid's, see scripts/lib/meshlab_sources.sh), the real test meshes
 # (Debian's `libcgal-demo`) and pymeshlab with the Python test tools, pinned
-# (requirements.txt), into a virtual environment under $VRS_CACHE (default /var/cache/vrsimplify).
+# (requirements.txt), into a virtual environment under $VRS_CACHE (default /var/cache/vrsimplify),
+# and the viewer page's tools (scripts/lib/web_deps.sh: Node.js, Chromium, pinned npm packages).
 # With --roots it also makes the Debian trixie and sid roots holding the real MeshLab 2022.02
 # and 2025.07 GUIs (scripts/lib/meshlab_root.sh; a few minutes, once).
 # Idempotent: a second run only checks.
@@ -83,6 +84,8 @@ done
 # pymeshlab, pytest, trimesh and auditwheel, pinned, in a virtual environment of their own
 # (rebuilt when requirements.txt changes). Debian's python3, whatever else is on PATH.
 "$top/scripts/lib/pinned_venv.sh" "$cache/venv" "$top/requirements.txt"
+# Node.js, Chromium and the viewer page's pinned npm packages (web/package-lock.json).
+"$top/scripts/lib/web_deps.sh"
 
 if [ "$roots" -eq 1 ]; then
   for suite in trixie sid; do

@@ -7,11 +7,13 @@
 #include <cstdlib>
 #include <cstring>
 #include <string>
+#include <vector>
 
 #include <strings.h>
 #include <unistd.h>
 
 #include "exact_vertices.h"
+#include "glb_output.h"
 #include "mesh_io.h"
 #include "progress_bar.h"
 #include "tiled_run.h"
@@ -22,6 +24,7 @@ namespace {
 
 const char* kUsage =
     "usage: vrsimplify INPUT OUTPUT [target] [options]\n"
+    "       vrsimplify serve OUT.glb [--port P] [--throttle BYTES/S]   the viewer page\n"
     "  files: .ply (ascii or binary), .off, .obj, .stl; OUTPUT - writes the input's format to\n"
     "  standard output (the report then goes to standard error)\n"
     "target (one; default --ratio 0.5):\n"
@@ -42,7 +45,7 @@ const char* kUsage =
     "                                  (default) or by the paper's evaluation factor\n"
     "  --fill best|projection          fill each hole with the best of the projection and the\n"
     "                                  fans (default) or with the paper's projection only\n"
-    "  --mapping linear|log            factor -> interval mapping (default linear)\n"
+    "  --mapping linear|log            factor -> interval mapping (default log)\n"
     "  --queue intervals|heap          hash table (default) or exact heap (reference)\n"
     "  --reprice lazy|eager            a removal's queued neighbours are priced again when\n"
     "                                  popped (default) or at once (the paper's way, slower)\n"
@@ -65,6 +68,12 @@ const char* kUsage =
     "                                  terminal (a bar, after the first second); --progress\n"
     "                                  elsewhere prints a line per 10 %\n"
     "  --json                          print one JSON line instead of the text report\n"
+    "levels of detail (OUTPUT .glb: binary glTF 2.0, every attribute of the input):\n"
+    "  --lods R,R,..|N                 one nested run: each level simplified from the finer\n"
+    "                                  one (its vertices a subset of it), all in one .glb\n"
+    "                                  sharing one vertex buffer, coarsest level first, bound\n"
+    "                                  by MSFT_lod; N: N levels halving from 1 (the input).\n"
+    "                                  Without --lods a .glb holds the --ratio level alone\n"
     "bigger than memory (tiled, out of core; with --ratio):\n"
     "  --memory SIZE                   memory budget (512M, 2G, ...): a mesh that does not\n"
     "                                  fit is streamed into tiles simplified on local worker\n"
@@ -94,7 +103,12 @@ bool writable(const std::string& path) {
   std::string ext = path.substr(dot + 1);
   for (char& c : ext)
     c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
-  return ext == "ply" || ext == "off" || ext == "obj" || ext == "stl";
+  return ext == "ply" || ext == "off" || ext == "obj" || ext == "stl" || ext == "glb";
+}
+
+bool is_glb(const std::string& path) {
+  return path.size() > 4 && (path.compare(path.size() - 4, 4, ".glb") == 0 ||
+                             path.compare(path.size() - 4, 4, ".GLB") == 0);
 }
 
 bool parse_double(const char* s, double& out) {
@@ -197,6 +211,21 @@ int main(int argc, char** argv) {
   std::string in, out;
   vrs::Options opt;
   bool json = false, ascii = false;
+  // `vrsimplify serve OUT.glb`: the viewer page lives in the Python package (vrsimplify.serve).
+  if (argc >= 2 && std::strcmp(argv[1], "serve") == 0) {
+    const char* python = std::getenv("VRS_PYTHON");
+    if (!python || !*python) python = "python3";
+    std::vector<const char*> args = {python, "-m", "vrsimplify.serve"};
+    for (int i = 2; i < argc; ++i)
+      args.push_back(argv[i]);
+    args.push_back(nullptr);
+    execvp(python, const_cast<char* const*>(args.data()));
+    std::fprintf(stderr,
+                 "vrsimplify: serve needs the Python package (pip install vrsimplify): "
+                 "cannot run %s\n",
+                 python);
+    return 1;
+  }
   // The progress bar: on a terminal by default; --progress forces it (logs), --quiet drops it.
   int progress = -1;
   int targets = 0;
@@ -204,6 +233,7 @@ int main(int argc, char** argv) {
   double max_error = 0;  // mesh units, or percent of the diagonal
   bool max_error_percent = false, error_bound = false;
   vrs_tool::TiledRequest tiled; // --memory / --scheduler
+  std::vector<double> lods;     // --lods: levels of detail into one .glb
   std::string not_tiled;        // the first option a tiled run would not honour
   for (int i = 1; i < argc; ++i) {
     std::string a = argv[i];
@@ -263,6 +293,10 @@ int main(int argc, char** argv) {
       if (e.empty() || !parse_double(e.c_str(), max_error) || !(max_error > 0))
         return usage_error("--max-error needs a distance > 0, in mesh units or with % (of the "
                            "bounding-box diagonal)");
+    } else if (a == "--lods") {
+      if (!(v = value()) || !vrs_tool::parse_lods(v, lods))
+        return usage_error("--lods needs ratios in (0, 1] (0.5,0.1,0.01) or a count of levels "
+                           "(halving from 1)");
     } else if (a == "--memory") {
       if (!(v = value()) || !(tiled.memory = vrs::tiled::parse_memory(v)))
         return usage_error("--memory needs a size such as 512M or 2G");
@@ -366,7 +400,26 @@ int main(int argc, char** argv) {
     out = stdout_file;
   }
   if (!writable(out))
-    return usage_error("cannot write " + out + ": the output must end in .ply, .off, .obj or .stl");
+    return usage_error("cannot write " + out +
+                       ": the output must end in .ply, .off, .obj, .stl or .glb");
+  if (!lods.empty() && !is_glb(out))
+    return usage_error("--lods writes one .glb with every level: OUTPUT must end in .glb");
+  if (is_glb(out)) {
+    if (tiled.memory || !tiled.scheduler.empty())
+      return usage_error("tiled runs (--memory, --scheduler) write the input's format, not .glb");
+    if (ascii) return usage_error(".glb is binary: --ascii does not apply");
+    if (targets && opt.target.kind != vrs::TargetKind::Ratio)
+      return usage_error("a .glb takes its levels as --ratio R or --lods, not other targets");
+    if (max_error > 0)
+      return usage_error("a .glb takes no --max-error (--error-bound records "
+                         "each level's bound)");
+    vrs_tool::GlbRequest g;
+    g.input = in, g.output = out, g.options = opt, g.json = json, g.error_bound = error_bound;
+    g.ratios = lods.empty() ? std::vector<double>{opt.target.ratio} : lods;
+    if (lods.empty() && !(opt.target.ratio > 0 && opt.target.ratio <= 1))
+      return usage_error("--ratio for a .glb must be in (0, 1]");
+    return vrs_tool::run_glb(g);
+  }
   const int mesh_fd = to_stdout ? dup(STDOUT_FILENO) : -1;
   if (to_stdout) {
     std::fflush(stdout);

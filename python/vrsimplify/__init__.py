@@ -17,7 +17,8 @@ import numpy as np
 from . import _core
 
 __version__: str = _core.__version__
-__all__ = ["simplify", "Result", "Report", "bounding_box_diagonal"]
+__all__ = ["simplify", "Result", "Report", "bounding_box_diagonal", "lods", "Lods", "LodLevel",
+           "write_glb"]
 
 
 class Report(TypedDict):
@@ -176,3 +177,5 @@ def bounding_box_diagonal(vertices) -> float:
         v = v.astype(np.float64)
     return float(_core.bounding_box_diagonal(v))
 
+
+from .lods import LodLevel, Lods, lods, write_glb  # noqa: E402  (needs _array above)

@@ -5,6 +5,9 @@ import sys
 
 
 def main() -> None:
+    if sys.argv[1:2] == ["serve"]:  # the viewer page and a .glb, over HTTP (vrsimplify.serve)
+        from .serve import main as serve
+        sys.exit(serve(sys.argv[2:]))
     exe = pathlib.Path(__file__).with_name("bin") / "vrsimplify"
     if not exe.is_file():
         sys.exit("vrsimplify: this package was built without the command-line tool "

@@ -70,7 +70,7 @@ done
 
 # 6. Every target kind and option is accepted and does what it says.
 for args in "--faces 3000" "--vertices 2000" "--max-factor 0.0001" "--auto" "--auto --intervals 50" \
-  "--ratio 0.2 --queue heap" "--ratio 0.2 --mapping log" "--ratio 0.2 --mode terrain" \
+  "--ratio 0.2 --queue heap" "--ratio 0.2 --mapping linear" "--ratio 0.2 --mode terrain" \
   "--ratio 0.2 --mode planar" "--ratio 0.2 --simplify-boundary" "--ratio 0.2 --priority factor" \
   "--ratio 0.2 --priority local-error" "--max-factor 0.0001 --priority factor" \
   "--ratio 0.2 --fill projection" "--ratio 0.2 --fill best" "--ratio 0.2 --progress" \
@@ -221,8 +221,8 @@ expect_exit 2 "--json takes no value" "$bin" "$in" "$out/never.ply" --json=yes
   fail "OUTPUT -: $(head -c 200 "$out/stdout.json")"
 expect_exit 2 "write a file, not standard output" "$bin" "$in" - --ratio 0.1 --memory 1M
 # The output's format first: with an input that does not even exist, the complaint is the output.
-expect_exit 2 "must end in .ply, .off, .obj or .stl" "$bin" "$out/missing.off" "$out/never.glb"
-[ ! -e "$out/never.glb" ] && ok || fail "an output of an unknown format was written"
+expect_exit 2 "must end in .ply, .off, .obj, .stl or .glb" "$bin" "$out/missing.off" "$out/never.fbx"
+[ ! -e "$out/never.fbx" ] && ok || fail "an output of an unknown format was written"
 "$bin" "$in" "$out/nb.ply" --ratio 0.1 --json >"$out/nb.json" &&
   ! grep -q '"error_bound_percent' "$out/nb.json" && [ "$(grep -o '"error_bound"' "$out/nb.json" | wc -l)" = 1 ] &&
   grep -q '"boundary_simplified":false' "$out/nb.json" && ok ||

@@ -18,12 +18,13 @@ fail() { failed=$((failed + 1)); echo "FAIL: $1"; }
 declare -A args=(
   [--ascii]="--ascii" [--auto]="--auto" [--error-bound]="--error-bound" [--faces]="--faces 5000"
   [--feature-angle]="--feature-angle 30" [--fill]="--fill projection" [--intervals]="--intervals 50"
-  [--json]="--json" [--keep-boundary]="--keep-boundary" [--mapping]="--mapping log"
+  [--json]="--json" [--keep-boundary]="--keep-boundary" [--mapping]="--mapping linear"
   [--max-error]="--max-error 0.5%" [--max-factor]="--max-factor 0.001" [--max-jump]="--max-jump 2"
   [--mode]="--mode planar" [--priority]="--priority factor" [--progress]="--progress"
   [--queue]="--queue heap" [--ratio]="--ratio 0.2" [--reprice]="--reprice eager"
   [--simplify-boundary]="--simplify-boundary" [--threads]="--threads 1" [--version]="--version"
   [--vertices]="--vertices 3000" [--memory]="" [--scheduler]="" [--work-dir]="" [--workers]="--workers 1"
+  [--lods]=""
 )
 # Options that are about the run, not the mesh: the same output with or without them.
 same_output=" --json --progress --threads --workers --error-bound --ascii "
@@ -34,7 +35,9 @@ done
 "$bin" "$in" "$out/base-tiled.ply" --ratio 0.1 --memory 1M --quiet >/dev/null || fail "the tiled base run"
 for opt in "${!args[@]}"; do
   a=${args[$opt]}
-  case $opt in --memory|--scheduler|--work-dir|--version) continue ;; esac # the tiled switch itself, or no run
+  # The tiled switch itself, no run, or a .glb output (tests/web/test_glb.sh: --lods with any
+  # other output and with --memory is refused there).
+  case $opt in --memory|--scheduler|--work-dir|--version|--lods) continue ;; esac
   target="--ratio 0.1"
   case $opt in --ratio|--faces|--vertices|--auto|--max-factor|--max-error) target="" ;; esac
   name=${opt#--}

@@ -1,0 +1,164 @@
+// The levels-of-detail .glb (vrs/glb.h), read back byte by byte: the container, the streaming
+// layout (the coarsest level's indices and vertex prefix first), every level's triangles on
+// the input's positions, and per-corner data split into glTF vertices at seams. Khronos'
+// validator and three.js check the same files from tests/web/.
+#include <gtest/gtest.h>
+
+#include <cstring>
+#include <fstream>
+#include <iterator>
+#include <set>
+
+#include "test_meshes.h"
+#include "vrs/glb.h"
+
+using namespace vrs;
+
+namespace {
+
+std::vector<uint8_t> read_all(const std::string& path) {
+  std::ifstream f(path, std::ios::binary);
+  return {std::istreambuf_iterator<char>(f), {}};
+}
+
+uint32_t u32(const std::vector<uint8_t>& b, size_t at) {
+  uint32_t x;
+  std::memcpy(&x, b.data() + at, 4);
+  return x;
+}
+
+std::string temp_path(const char* name) {
+  return ::testing::TempDir() + name;
+}
+
+} // namespace
+
+TEST(Glb, LevelsReadBackFromTheStreamingLayout) {
+  const Mesh in = vrs_test::icosphere(4);
+  Options o;
+  o.threads = 1;
+  const LodChain chain = simplify_lods(in, {1.0, 0.5, 0.1, 0.01}, o);
+  ASSERT_TRUE(chain.ok);
+  std::vector<float> normals(in.positions); // a sphere's normals are its positions
+  GlbAttributes a;
+  a.normals = normals.data();
+  GlbLayout layout;
+  const std::string path = temp_path("levels.glb");
+  ASSERT_EQ(write_glb(path, in.positions.data(), in.vertex_count(), chain, a, &layout), "");
+  const std::vector<uint8_t> b = read_all(path);
+  ASSERT_EQ(b.size(), layout.file_bytes);
+  EXPECT_EQ(u32(b, 0), 0x46546C67u); // glTF
+  EXPECT_EQ(u32(b, 4), 2u);
+  EXPECT_EQ(u32(b, 8), b.size());
+  const uint32_t json_bytes = u32(b, 12);
+  EXPECT_EQ(u32(b, 16), 0x4E4F534Au);
+  EXPECT_EQ(json_bytes % 4, 0u);
+  const std::string json(b.begin() + 20, b.begin() + 20 + json_bytes);
+  EXPECT_NE(json.find("\"MSFT_lod\":{\"ids\":[1,2,3]}"), std::string::npos);
+  EXPECT_NE(json.find("MSFT_screencoverage"), std::string::npos);
+  EXPECT_EQ(u32(b, 20 + json_bytes + 4), 0x004E4942u);
+  const size_t bin = 20 + json_bytes + 8;
+  EXPECT_EQ(u32(b, 20 + json_bytes), b.size() - bin);
+
+  // The coarsest level first: its indices, then the vertices, from the chunk's start.
+  const auto& coarse = layout.levels.back();
+  EXPECT_EQ(coarse.index_offset, bin);
+  EXPECT_EQ(layout.vertex_offset, bin + coarse.index_bytes);
+  EXPECT_EQ(coarse.bytes_to_draw, bin + coarse.index_bytes + coarse.vertex_bytes);
+  EXPECT_LT(double(coarse.bytes_to_draw), 0.05 * double(b.size()));
+  EXPECT_EQ(layout.vertex_stride, 24u);              // position and normal
+  EXPECT_EQ(layout.vertex_count, in.vertex_count()); // no corner data: no split
+
+  for (size_t k = 0; k < chain.levels.size(); ++k) {
+    const LodLevel& l = chain.levels[k];
+    const auto& L = layout.levels[k];
+    EXPECT_EQ(L.faces * 3, l.triangles.size());
+    EXPECT_EQ(L.vertex_count, l.vertex_count);
+    if (k + 1 < chain.levels.size()) { // finer levels' indices come after the vertices
+      EXPECT_GT(L.index_offset, layout.vertex_offset);
+    }
+    const bool wide = L.vertex_count >= 65535;
+    for (size_t c = 0; c < l.triangles.size(); ++c) {
+      uint32_t i = 0;
+      std::memcpy(&i, b.data() + L.index_offset + c * (wide ? 4 : 2), wide ? 4 : 2);
+      ASSERT_LT(i, L.vertex_count) << "level " << k << " reads past its prefix";
+      float p[3], n[3];
+      std::memcpy(p, b.data() + layout.vertex_offset + i * 24, 12);
+      std::memcpy(n, b.data() + layout.vertex_offset + i * 24 + 12, 12);
+      const uint32_t v = chain.vertices[l.triangles[c]];
+      ASSERT_EQ(std::memcmp(p, &in.positions[3 * v], 12), 0) << "positions are the input's";
+      EXPECT_NEAR(n[0] * n[0] + n[1] * n[1] + n[2] * n[2], 1.0, 1e-5);
+    }
+  }
+}
+
+TEST(Glb, CornerDataSplitsVerticesAtSeamsOnly) {
+  // Two texture charts on a grid: the seam column's vertices become two glTF vertices each,
+  // at every level; nothing else is split.
+  const int n = 16;
+  const Mesh in = vrs_test::grid(n, 0.0f);
+  const float x_seam = in.positions[3 * (n / 2)];
+  std::vector<uint32_t> keys(in.triangles.size());
+  std::vector<float> uvs(2 * in.triangles.size());
+  for (size_t f = 0; f < in.face_count(); ++f) {
+    float x = 0;
+    for (int c = 0; c < 3; ++c)
+      x += in.positions[3 * in.triangles[3 * f + c]] / 3;
+    const uint32_t chart = x < x_seam ? 0 : 1;
+    for (int c = 0; c < 3; ++c) {
+      const uint32_t v = in.triangles[3 * f + c];
+      keys[3 * f + c] = chart;
+      uvs[2 * (3 * f + c)] = in.positions[3 * v] + float(chart) * 10; // charts apart
+      uvs[2 * (3 * f + c) + 1] = in.positions[3 * v + 1];
+    }
+  }
+  Options o;
+  o.threads = 1;
+  const LodChain chain = simplify_lods(in, {1.0, 0.3}, o, &keys);
+  ASSERT_TRUE(chain.ok);
+  GlbAttributes a;
+  a.corner_uvs = uvs.data();
+  a.texture_uri = "chart image.png";
+  GlbLayout layout;
+  const std::string path = temp_path("seams.glb");
+  ASSERT_EQ(write_glb(path, in.positions.data(), in.vertex_count(), chain, a, &layout), "");
+  EXPECT_EQ(layout.vertex_stride, 20u);
+  EXPECT_EQ(layout.vertex_count, in.vertex_count() + (n + 1)) << "one more per seam vertex";
+  const std::vector<uint8_t> b = read_all(path);
+  const std::string json(b.begin() + 20, b.begin() + 20 + u32(b, 12));
+  EXPECT_NE(json.find("\"uri\":\"chart%20image.png\""), std::string::npos);
+  // The coarse level: every face's texture coordinates from one chart (u < 10 or u >= 10).
+  const auto& L = layout.levels[1];
+  for (size_t t = 0; t < L.faces; ++t) {
+    std::set<int> charts;
+    for (int c = 0; c < 3; ++c) {
+      uint16_t i;
+      std::memcpy(&i, b.data() + L.index_offset + 2 * (3 * t + c), 2);
+      float uv[2];
+      std::memcpy(uv, b.data() + layout.vertex_offset + i * 20 + 12, 8);
+      charts.insert(uv[0] >= 9.5f ? 1 : 0);
+    }
+    EXPECT_EQ(charts.size(), 1u) << "face " << t;
+  }
+}
+
+TEST(Glb, RefusesWhatGltfCannotHoldAndLeavesNoFile) {
+  Mesh in = vrs_test::icosphere(2);
+  Options o;
+  const LodChain chain = simplify_lods(in, {1.0}, o);
+  ASSERT_TRUE(chain.ok);
+  in.positions[0] = std::numeric_limits<float>::quiet_NaN();
+  const std::string path = temp_path("nan.glb");
+  std::remove(path.c_str());
+  const std::string err = write_glb(path, in.positions.data(), in.vertex_count(), chain, {});
+  EXPECT_NE(err.find("non-finite"), std::string::npos) << err;
+  EXPECT_FALSE(std::ifstream(path).good());
+  // Corner data without corner sources, and an unwritable path.
+  std::vector<float> uvs(2 * in.triangles.size());
+  GlbAttributes a;
+  a.corner_uvs = uvs.data();
+  in.positions[0] = 0;
+  EXPECT_NE(write_glb(path, in.positions.data(), in.vertex_count(), chain, a), "");
+  EXPECT_NE(write_glb("/nonexistent-dir/x.glb", in.positions.data(), in.vertex_count(), chain, {}),
+            "");
+}
