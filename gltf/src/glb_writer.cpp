@@ -86,6 +86,7 @@ class VertexTable {
       }
     out = uint32_t(next_.size());
     next_.push_back(first_[v]);
+    vertex_of_.push_back(v);
     first_[v] = out;
     bytes_.insert(bytes_.end(), record_.begin(), record_.end());
     for (int c = 0; c < 3; ++c) {
@@ -95,6 +96,38 @@ class VertexTable {
     return true;
   }
 
+  // The records added since `from`, put in the order of their vertices' `rank` (the chain's
+  // shared order): without split vertices the glTF vertices are then exactly that order.
+  // `indices` (the level just added) follow.
+  void order_since(size_t from, const std::vector<uint32_t>& rank, std::vector<uint32_t>& indices) {
+    const size_t count = next_.size() - from;
+    std::vector<uint32_t> by_rank(count);
+    for (size_t i = 0; i < count; ++i)
+      by_rank[i] = uint32_t(from + i);
+    std::stable_sort(by_rank.begin(), by_rank.end(), [&](uint32_t a, uint32_t b) {
+      return rank[vertex_of_[a]] < rank[vertex_of_[b]];
+    });
+    std::vector<uint32_t> new_id(count);
+    for (size_t i = 0; i < count; ++i)
+      new_id[by_rank[i] - from] = uint32_t(from + i);
+    auto moved = [&](uint32_t r) { return r != kNoRecord && r >= from ? new_id[r - from] : r; };
+    std::vector<uint8_t> bytes(count * stride_);
+    std::vector<uint32_t> next(count), vertex(count);
+    for (size_t i = 0; i < count; ++i) {
+      const uint32_t old = by_rank[i];
+      std::memcpy(bytes.data() + i * stride_, bytes_.data() + size_t(old) * stride_, stride_);
+      next[i] = moved(next_[old]);
+      vertex[i] = vertex_of_[old];
+    }
+    for (size_t r = from; r < next_.size(); ++r) // each vertex's newest record, once
+      if (first_[vertex_of_[r]] == r) first_[vertex_of_[r]] = new_id[r - from];
+    std::memcpy(bytes_.data() + from * stride_, bytes.data(), bytes.size());
+    std::copy(next.begin(), next.end(), next_.begin() + from);
+    std::copy(vertex.begin(), vertex.end(), vertex_of_.begin() + from);
+    for (uint32_t& i : indices)
+      i = moved(i);
+  }
+
  private:
   const float* pos_;
   const GlbAttributes& a_;
@@ -102,6 +135,7 @@ class VertexTable {
   int normal_at_ = -1, color_at_ = -1, uv_at_ = -1;
   std::vector<uint8_t> record_, bytes_;
   std::vector<uint32_t> first_, next_; // per input vertex its records, chained
+  std::vector<uint32_t> vertex_of_;    // per record its input vertex
   float low_[3] = {std::numeric_limits<float>::infinity(), std::numeric_limits<float>::infinity(),
                    std::numeric_limits<float>::infinity()};
   float high_[3] = {-low_[0], -low_[1], -low_[2]};
@@ -150,13 +184,18 @@ std::string write_glb(const std::string& path, const float* positions, size_t ve
   std::vector<std::vector<uint32_t>> indices(n);
   std::vector<size_t> prefix(n);
   std::vector<std::array<float, 6>> bounds(n);
+  std::vector<uint32_t> rank(vertex_count, kNoRecord);
+  for (size_t i = 0; i < chain.vertices.size(); ++i)
+    rank[chain.vertices[i]] = uint32_t(i);
   for (size_t k = n; k-- > 0;) {
     const LodLevel& l = chain.levels[k];
+    const size_t before = table.size();
     indices[k].resize(l.triangles.size());
     for (size_t c = 0; c < l.triangles.size(); ++c)
       if (!table.find_or_add(chain.vertices[l.triangles[c]],
                              corners ? l.corner_source[c] : kNoRecord, indices[k][c]))
         return "a face has a vertex with a non-finite coordinate, which glTF cannot hold";
+    table.order_since(before, rank, indices[k]);
     prefix[k] = table.size();
     for (int c = 0; c < 3; ++c)
       bounds[k][c] = table.low()[c], bounds[k][3 + c] = table.high()[c];

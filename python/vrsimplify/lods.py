@@ -62,10 +62,13 @@ def lods(mesh_vertices, mesh_faces, ratios: Sequence[float], /, *, mode: str = "
          corner_keys=None) -> Lods:
     """Simplifies to every ratio in one nested run (each level from the finer one).
 
-    ratios: shares of the input's faces in (0, 1]; 1 keeps the input as a level. The other
-    keywords are ``simplify``'s. ``corner_keys``: (faces, 3) integers, equal where two corners
+    ratios: shares of the input's faces in (0, 1]; 1 keeps the input as a level. ``mode``,
+    ``threads``, ``simplify_boundary``, ``keep_boundary``, ``max_jump``, ``feature_angle`` and
+    ``seams`` are ``simplify``'s. ``corner_keys``: (faces, 3) integers, equal where two corners
     carry the same per-corner data (texture coordinates, normals): edges across which they
-    differ are seams every level keeps. Bad input or parameters raise ValueError.
+    differ are seams every level keeps. Each level's vertices are a subset of the finer
+    level's; its error adds to the finer level's (each is measured against the level it was
+    made from). Bad input or parameters raise ValueError.
     """
     from . import _array
 
@@ -111,9 +114,10 @@ def write_glb(path, mesh_vertices, chain: Lods, /, *, normals=None, colors=None,
     One vertex buffer shared by all levels, coarsest level first; one index buffer per level;
     the levels bound by MSFT_lod. Per-vertex data, indexed like ``mesh_vertices``: ``normals``
     (n, 3), ``colors`` (n, 3 or 4, floats in [0, 1] or 8-bit integers), ``uvs`` (n, 2). Per
-    corner, indexed like the input's faces (faces, 3, ...) or (3 * faces, ...): ``corner_*``;
-    a vertex whose corners differ becomes one glTF vertex per distinct corner. ``texture``: the
-    base color image, as a path relative to the file. Returns the layout: ``file_bytes`` and
+    corner, indexed like the input's faces (faces, 3, ...) or (3 * faces, ...):
+    ``corner_normals``, ``corner_colors``, ``corner_uvs`` (they take precedence); a vertex whose corners differ becomes one glTF vertex per distinct corner. ``texture``: the
+    base color image, as a path relative to the file. ``level_errors``: one number per level
+    (finest first), recorded in its mesh's extras and shown by the viewer page. Returns the layout: ``file_bytes`` and
     per level ``faces``, ``vertices``, ``bytes_to_draw`` (what a reader with range requests
     fetches to draw it). Written whole or not at all.
     """

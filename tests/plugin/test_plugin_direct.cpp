@@ -123,10 +123,24 @@ TEST_F(Direct, LevelsOfDetailLeaveTheInputUntouched) {
   EXPECT_TRUE(same(snapshot(m->cm), before));
   ASSERT_EQ(md.size(), 4);
   int faces = m->cm.fn;
+  // The levels nest: each layer's vertices are vertices of the finer one, bit for bit (what a
+  // shared vertex buffer of levels of detail needs, vrsimplify --lods).
+  auto positions = [](const CMeshO& cm) {
+    std::set<std::array<float, 3>> out;
+    for (const auto& v : cm.vert)
+      if (!v.IsD()) out.insert({v.cP()[0], v.cP()[1], v.cP()[2]});
+    return out;
+  };
+  std::set<std::array<float, 3>> finer = positions(m->cm);
   for (MeshModel* layer : md.meshList) {
     if (layer == m) continue;
     EXPECT_LT(layer->cm.fn, faces); // each level from the previous one, smaller
     faces = layer->cm.fn;
+    const auto mine = positions(layer->cm);
+    for (const auto& p : mine)
+      ASSERT_TRUE(finer.count(p)) << "a vertex of " << qUtf8Printable(layer->label())
+                                  << " is not one of the finer level's";
+    finer = mine;
   }
 }
 
