@@ -37,7 +37,7 @@ def main():
     import trimesh
 
     mesh = trimesh.Trimesh(vertices, faces, process=False)
-    for name in ("in.obj", "in.ply", "scan.ply", "in.off"):
+    for name in ("in.obj", "in.ply", "scan.ply", "in.off", "scan.obj"):
         mesh.export(work / name)
 
 
@@ -48,6 +48,7 @@ def main():
         vertices = np.load("vertices.npy"); faces = np.load("faces.npy")
         colors = np.random.default_rng(1).random((len(vertices), 3))
         mesh = trimesh.Trimesh(vertices, faces, process=False)
+        normals = np.asarray(mesh.vertex_normals)
         """)
 
     def adapt(code):
@@ -88,6 +89,12 @@ def main():
             args = shlex.split(command)
             if any(a.startswith(("IN", "OUT", "[")) or "..." in a for a in args):
                 continue  # a synopsis, not a command
+            if args[1] == "serve":  # a server: it must start and serve the page, then it stops
+                ran += 1
+                error = serve_check(args)
+                if error:
+                    failures.append(f"{page.name}: `{command}`: {error}")
+                continue
             # As a reader types it: through the shell (redirections included).
             r = subprocess.run(["bash", "-c", command], capture_output=True, text=True)
             if cluster:
@@ -99,6 +106,26 @@ def main():
     for f in failures:
         print("FAIL:", f)
     sys.exit(1 if failures else 0)
+
+
+def serve_check(args):
+    """Runs `vrsimplify serve ...` on a free port: "" once its page answers, else what failed."""
+    import urllib.request
+
+    server = subprocess.Popen(args + ["--port", "0"], stdout=subprocess.PIPE,
+                              stderr=subprocess.PIPE, text=True)
+    try:
+        line = server.stdout.readline()
+        if " at http://" not in line:
+            return f"did not start: {line} {server.stderr.read()}"
+        base = line.split(" at ")[1].split()[0]
+        page = urllib.request.urlopen(base, timeout=20).read().decode()
+        return "" if "viewer.js" in page else "no viewer page at " + base
+    except OSError as e:
+        return str(e)
+    finally:
+        server.terminate()
+        server.wait(10)
 
 
 if __name__ == "__main__":  # Dask's worker processes import this file again

@@ -1,0 +1,55 @@
+#!/usr/bin/env bash
+# Levels of detail in one .glb, side by side in one run (bench/LODS.md): a chain 100/50/10/1 %
+# of bunny00 Loop-subdivided to 1.2 M faces and of a textured scan (the refined elephant
+# Loop-subdivided to 5.7 M faces, 7 UV charts: bench/attributed_mesh.py), against the
+# full-resolution mesh written alone and the levels as separate runs make them (one .glb each,
+# its own vertices); each nested level's mean and max error (vrs_bench --compare, read back
+# from the file) against a standalone run at the same ratio; and the browser's view: the viewer
+# page in headless Chromium, served throttled, draws the coarsest level after how many bytes
+# (tests/web/browser_test.mjs).
+#   scripts/bench_lods.sh [--samples S]      (data: bench/lods.jsonl; the report: bench/lods_report.py)
+set -euo pipefail
+top=$(cd "$(dirname "$0")/.." && pwd)
+samples=100000
+[ "${1:-}" = --samples ] && samples=$2
+"$top/scripts/setup.sh" >/dev/null
+"$top/scripts/build.sh" >/dev/null
+bin=$top/build/bin/vrsimplify bench=$top/build/bin/vrs_bench
+python=${VRS_CACHE:-/var/cache/vrsimplify}/venv/bin/python
+inputs=$top/third_party/bench-inputs data=$top/third_party/cgal-data/data/meshes
+mkdir -p "$inputs"
+work=$(mktemp -d)
+trap 'rm -rf "$work"' EXIT
+[ -s "$inputs/bunny_loop2.ply" ] || "$bench" --loop "$data/bunny00.off" 2 "$inputs/bunny_loop2.ply" >&2
+[ -s "$inputs/elephant_loop3.ply" ] || "$bench" --loop "$data/refined_elephant.off" 3 "$inputs/elephant_loop3.ply" >&2
+[ -s "$inputs/elephant_textured.ply" ] ||
+  "$python" "$top/bench/attributed_mesh.py" textured "$inputs/elephant_loop3.ply" "$inputs/elephant_textured.ply" >&2
+ratios="0.5 0.1 0.01"
+results=$work/results.jsonl
+for name in bunny_loop2 elephant_textured; do
+  in=$inputs/$name.ply
+  echo "bench_lods: $name" >&2
+  /usr/bin/time -f "%e %M" -o "$work/time" "$bin" "$in" "$work/$name-chain.glb" --lods 1,0.5,0.1,0.01 --json >"$work/$name-chain.json"
+  read -r seconds kb <"$work/time"
+  "$bin" "$in" "$work/$name-full.glb" --ratio 1 --json >"$work/$name-full.json"
+  node "$top/tests/web/validate_glb.mjs" "$work/$name-chain.glb" "$work/$name-full.glb" >"$work/$name-validator.txt" ||
+    { cat "$work/$name-validator.txt" >&2; exit 1; }
+  "$python" "$top/bench/glb_levels.py" "$work/$name-chain.glb" "$work/$name-nested"
+  k=1
+  for r in $ratios; do
+    "$bin" "$in" "$work/$name-alone-$r.glb" --ratio "$r" --json >"$work/$name-alone-$r.json"
+    "$python" "$top/bench/glb_levels.py" "$work/$name-alone-$r.glb" "$work/$name-alone-$r-"
+    nested=$("$bench" --compare "$in" "$work/$name-nested$k.ply" --samples "$samples")
+    alone=$("$bench" --compare "$in" "$work/$name-alone-$r-0.ply" --samples "$samples")
+    echo "{\"mesh\":\"$name\",\"ratio\":$r,\"nested\":\"$nested\",\"alone\":\"$alone\",\"alone_bytes\":$(stat -c %s "$work/$name-alone-$r.glb")}" >>"$results"
+    k=$((k + 1))
+  done
+  echo "{\"mesh\":\"$name\",\"chain\":$(tr -d '\n' <"$work/$name-chain.json"),\"full\":$(cat "$work/$name-full.json"),\"seconds\":$seconds,\"peak_kb\":$kb,\"validator\":\"$(head -n 1 "$work/$name-validator.txt" | sed 's/.*: //')\"}" >>"$results"
+  # The browser: the coarsest level after how many bytes, throttled to 20 MB/s.
+  VRS_PYTHON=$python node "$top/tests/web/browser_test.mjs" "$top/python/vrsimplify/serve.py" \
+    "$work/$name-chain.glb" "$work/browser-$name" --throttle 20000000 --max-first 0.02 --stream-only >"$work/browser-$name.txt" || true
+  echo "{\"mesh\":\"$name\",\"browser\":$("$python" -c 'import json, sys; print(json.dumps(json.load(open(sys.argv[1]))))' "$work/browser-$name/figures.json"),\"browser_checks\":\"$(grep -c '^ok' "$work/browser-$name.txt") ok, $(grep -c '^FAIL' "$work/browser-$name.txt") failed\"}" >>"$results"
+done
+cp "$results" "$top/bench/lods.jsonl"
+"$python" "$top/bench/lods_report.py" "$top/bench/lods.jsonl" "$top/bench/LODS.md"
+echo "wrote bench/lods.jsonl and bench/LODS.md" >&2
