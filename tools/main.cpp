@@ -14,6 +14,7 @@
 
 #include "exact_vertices.h"
 #include "glb_output.h"
+#include "json_text.h"
 #include "mesh_io.h"
 #include "progress_bar.h"
 #include "tiled_run.h"
@@ -125,22 +126,6 @@ bool parse_count(const char* s, size_t& out) {
   return *end == '\0';
 }
 
-// Text as a JSON string's content.
-std::string json_text(const std::string& s) {
-  std::string out;
-  for (const char c : s) {
-    if (c == '"' || c == '\\') out += '\\';
-    if (static_cast<unsigned char>(c) < 0x20) {
-      char b[8];
-      std::snprintf(b, sizeof b, "\\u%04x", c);
-      out += b;
-      continue;
-    }
-    out += c;
-  }
-  return out;
-}
-
 // The report's keys are the numpy API's and pymeshlab's (docs/report.md).
 void print_json(const vrs::Report& r, double seconds_simplify, double seconds_total, double diag,
                 bool bounded) {
@@ -151,21 +136,21 @@ void print_json(const vrs::Report& r, double seconds_simplify, double seconds_to
               r.removed, seconds_simplify, seconds_total);
   for (int i = 0; i < vrs::RejectCount; ++i)
     std::printf("%s\"%s\":%zu", i ? "," : "", vrs::reject_name(vrs::Reject(i)), r.rejected[i]);
-  std::printf("},\"rejected_total\":%zu,\"stop_reason\":\"%s\",\"target_reached\":%s,"
-              "\"max_removed_factor\":%.9g,\"kept\":{\"boundary\":%zu,\"nonmanifold\":%zu,"
-              "\"locked\":%zu,\"high_valence\":%zu,\"constrained\":%zu},"
-              "\"constrained_edges\":%zu,\"input_issues\":{\"degenerate_faces\":%zu,"
-              "\"nonfinite_vertices\":%zu,\"unreferenced_vertices\":%zu,"
-              "\"reoriented_faces\":%zu},"
-              "\"relaxed_removals\":%zu,\"boundary_simplified\":%s,\"stop_detail\":\"%s\","
-              "\"message\":\"%s\"",
-              r.rejected_total(), vrs::stop_reason_name(r.stop),
-              r.target_reached ? "true" : "false", r.max_removed_factor, r.kept_boundary,
-              r.kept_nonmanifold, r.kept_locked, r.kept_high_valence, r.kept_constrained,
-              r.constrained_edges, r.dropped_degenerate_faces, r.nonfinite_vertices,
-              r.unreferenced_vertices, r.reoriented_faces, r.relaxed_removals,
-              r.boundary_simplified ? "true" : "false", json_text(r.stop_detail).c_str(),
-              json_text(r.message).c_str());
+  std::printf(
+      "},\"rejected_total\":%zu,\"stop_reason\":\"%s\",\"target_reached\":%s,"
+      "\"max_removed_factor\":%.9g,\"kept\":{\"boundary\":%zu,\"nonmanifold\":%zu,"
+      "\"locked\":%zu,\"high_valence\":%zu,\"constrained\":%zu},"
+      "\"constrained_edges\":%zu,\"input_issues\":{\"degenerate_faces\":%zu,"
+      "\"nonfinite_vertices\":%zu,\"unreferenced_vertices\":%zu,"
+      "\"reoriented_faces\":%zu},"
+      "\"relaxed_removals\":%zu,\"boundary_simplified\":%s,\"stop_detail\":\"%s\","
+      "\"message\":\"%s\"",
+      r.rejected_total(), vrs::stop_reason_name(r.stop), r.target_reached ? "true" : "false",
+      r.max_removed_factor, r.kept_boundary, r.kept_nonmanifold, r.kept_locked, r.kept_high_valence,
+      r.kept_constrained, r.constrained_edges, r.dropped_degenerate_faces, r.nonfinite_vertices,
+      r.unreferenced_vertices, r.reoriented_faces, r.relaxed_removals,
+      r.boundary_simplified ? "true" : "false", vrs_common::json_text(r.stop_detail).c_str(),
+      vrs_common::json_text(r.message).c_str());
   // A bound that was not tracked is absent, never 0 (which would read "no error at all").
   if (bounded)
     std::printf(",\"error_bound\":%.9g,\"error_bound_percent\":%.9g", r.error_bound,

@@ -8,6 +8,7 @@
 #include <string>
 #include <vector>
 
+#include "json_text.h"
 #include "vrs/glb.h"
 
 namespace vrs {
@@ -56,8 +57,8 @@ class GlbJson {
 
   std::string finish() const {
     const size_t n = meshes_.size();
-    std::string s =
-        "{\"asset\":{\"version\":\"2.0\",\"generator\":\"" + escaped(a_.generator) + "\"}";
+    std::string s = "{\"asset\":{\"version\":\"2.0\",\"generator\":\"" +
+                    vrs_common::json_text(a_.generator) + "\"}";
     if (n > 1) s += ",\"extensionsUsed\":[\"MSFT_lod\"]";
     s += ",\"scene\":0,\"scenes\":[{\"nodes\":[0]}],\"nodes\":[";
     for (size_t k = 0; k < n; ++k) {
@@ -85,7 +86,7 @@ class GlbJson {
     if (!a_.texture_uri.empty())
       s += ",\"samplers\":[{\"magFilter\":9729,\"minFilter\":9987}],\"textures\":[{\"sampler\":0,"
            "\"source\":0}],\"images\":[{\"uri\":\"" +
-           escaped(uri_escaped(a_.texture_uri)) + "\"}]";
+           vrs_common::json_text(uri_escaped(a_.texture_uri)) + "\"}]";
     s += ",\"accessors\":[" + join(accessors_) + "],\"bufferViews\":[" + join(views_) +
          "],\"buffers\":[{\"byteLength\":" + num(buffer_bytes_) + "}]}";
     return s;
@@ -119,20 +120,6 @@ class GlbJson {
     for (size_t i = 0; i < parts.size(); ++i)
       s += (i ? "," : "") + parts[i];
     return s;
-  }
-  static std::string escaped(const std::string& s) {
-    std::string out;
-    for (char c : s) {
-      if (c == '"' || c == '\\') out += '\\';
-      if (static_cast<unsigned char>(c) < 0x20) {
-        char b[8];
-        std::snprintf(b, sizeof b, "\\u%04x", c);
-        out += b;
-        continue;
-      }
-      out += c;
-    }
-    return out;
   }
   // A relative path as a URI reference: spaces and other reserved bytes percent-encoded.
   static std::string uri_escaped(const std::string& s) {

@@ -88,6 +88,17 @@ def _array(a, what: str, kinds: str) -> np.ndarray:
     return a
 
 
+def _mesh_arrays(mesh_vertices, mesh_faces) -> tuple[np.ndarray, np.ndarray]:
+    """Vertices as float32/64 and faces as 32/64-bit integers, copied only when another dtype."""
+    v = _array(mesh_vertices, "vertices", "f")
+    f = _array(mesh_faces, "faces", "iu")
+    if v.dtype not in (np.float32, np.float64):
+        v = v.astype(np.float64)
+    if f.dtype not in (np.int32, np.int64, np.uint32, np.uint64):
+        f = f.astype(np.int64)
+    return v, f
+
+
 def _target(ratio, faces, vertices, max_error) -> tuple[str, float]:
     given = [(k, v) for k, v in (("ratio", ratio), ("faces", faces), ("vertices", vertices))
              if v is not None]
@@ -148,12 +159,7 @@ def simplify(mesh_vertices, mesh_faces, /, *, ratio: Optional[float] = None,
     progress: called with the fraction done; returning False stops (a valid, partial result).
     Ctrl-C raises KeyboardInterrupt. Bad input or parameters raise ValueError.
     """
-    v = _array(mesh_vertices, "vertices", "f")
-    f = _array(mesh_faces, "faces", "iu")
-    if v.dtype not in (np.float32, np.float64):
-        v = v.astype(np.float64)
-    if f.dtype not in (np.int32, np.int64, np.uint32, np.uint64):
-        f = f.astype(np.int64)
+    v, f = _mesh_arrays(mesh_vertices, mesh_faces)
     kind, value = _target(ratio, faces, vertices, max_error)
     if seams is not None:
         seams = _array(seams, "seams", "iu").astype(np.int64, copy=False)

@@ -70,14 +70,9 @@ def lods(mesh_vertices, mesh_faces, ratios: Sequence[float], /, *, mode: str = "
     level's; its error adds to the finer level's (each is measured against the level it was
     made from). Bad input or parameters raise ValueError.
     """
-    from . import _array
+    from . import _array, _mesh_arrays
 
-    v = _array(mesh_vertices, "vertices", "f")
-    f = _array(mesh_faces, "faces", "iu")
-    if v.dtype not in (np.float32, np.float64):
-        v = v.astype(np.float64)
-    if f.dtype not in (np.int32, np.int64, np.uint32, np.uint64):
-        f = f.astype(np.int64)
+    v, f = _mesh_arrays(mesh_vertices, mesh_faces)
     try:
         rs = [float(r) for r in ratios]
     except (TypeError, ValueError):
