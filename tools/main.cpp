@@ -17,6 +17,7 @@
 #include "json_text.h"
 #include "mesh_io.h"
 #include "progress_bar.h"
+#include "python_module.h"
 #include "tiled_run.h"
 #include "vrs/simplify.h"
 #include "vrs/tiled.h"
@@ -197,20 +198,9 @@ int main(int argc, char** argv) {
   vrs::Options opt;
   bool json = false, ascii = false;
   // `vrsimplify serve OUT.glb`: the viewer page lives in the Python package (vrsimplify.serve).
-  if (argc >= 2 && std::strcmp(argv[1], "serve") == 0) {
-    const char* python = std::getenv("VRS_PYTHON");
-    if (!python || !*python) python = "python3";
-    std::vector<const char*> args = {python, "-m", "vrsimplify.serve"};
-    for (int i = 2; i < argc; ++i)
-      args.push_back(argv[i]);
-    args.push_back(nullptr);
-    execvp(python, const_cast<char* const*>(args.data()));
-    std::fprintf(stderr,
-                 "vrsimplify: serve needs the Python package (pip install vrsimplify): "
-                 "cannot run %s\n",
-                 python);
-    return 1;
-  }
+  if (argc >= 2 && std::strcmp(argv[1], "serve") == 0)
+    return vrs_tool::exec_python_module("vrsimplify.serve", {argv + 2, argv + argc}, "serve",
+                                        "pip install vrsimplify");
   // The progress bar: on a terminal by default; --progress forces it (logs), --quiet drops it.
   int progress = -1;
   int targets = 0;

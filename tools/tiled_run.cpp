@@ -15,6 +15,7 @@
 #include <unistd.h>
 
 #include "interrupt_guard.h"
+#include "python_module.h"
 #include "vrs/tiled.h"
 
 namespace vrs_tool {
@@ -37,23 +38,14 @@ uint64_t estimate_faces(const std::string& path) {
 
 namespace {
 
-// The Dask driver lives in the Python package; the console script tells where its Python is.
+// The Dask driver lives in the Python package.
 int run_on_dask(const TiledRequest& r) {
-  const char* python = std::getenv("VRS_PYTHON");
-  if (!python || !*python) python = "python3";
-  std::string ratio = std::to_string(r.ratio), memory = std::to_string(r.memory);
-  std::vector<const char*> args = {
-      python,    "-m",          "vrsimplify.tiled", r.input.c_str(),    r.output.c_str(),
-      "--ratio", ratio.c_str(), "--scheduler",      r.scheduler.c_str()};
-  if (r.memory) args.insert(args.end(), {"--memory", memory.c_str()});
-  if (!r.workdir.empty()) args.insert(args.end(), {"--work-dir", r.workdir.c_str()});
-  args.push_back(nullptr);
-  execvp(python, const_cast<char* const*>(args.data()));
-  std::fprintf(stderr,
-               "vrsimplify: --scheduler needs the Python package (pip install vrsimplify "
-               "dask distributed): cannot run %s\n",
-               python);
-  return 1;
+  std::vector<std::string> args = {r.input,       r.output,   "--ratio", std::to_string(r.ratio),
+                                   "--scheduler", r.scheduler};
+  if (r.memory) args.insert(args.end(), {"--memory", std::to_string(r.memory)});
+  if (!r.workdir.empty()) args.insert(args.end(), {"--work-dir", r.workdir});
+  return exec_python_module("vrsimplify.tiled", args, "--scheduler",
+                            "pip install vrsimplify dask distributed");
 }
 
 int run_in(const std::string& dir, const TiledRequest& r, int workers);

@@ -81,9 +81,10 @@ function makeMaterial(layout, baseUrl, hasNormals, hasColors) {
 // normal, texture coordinates) and as bytes (colors).
 function geometryOf(vertices, indices, layout) {
   const g = new THREE.BufferGeometry();
-  const copy = vertices.slice(); // its own buffer: later levels grow the prefix
-  const floats = new THREE.InterleavedBuffer(new Float32Array(copy.buffer), layout.stride / 4);
-  const bytes = new THREE.InterleavedBuffer(copy, layout.stride);
+  // A view of the stream's one vertex buffer: finer levels only write past this prefix.
+  const floats = new THREE.InterleavedBuffer(
+    new Float32Array(vertices.buffer, vertices.byteOffset, vertices.byteLength / 4), layout.stride / 4);
+  const bytes = new THREE.InterleavedBuffer(vertices, layout.stride);
   const attrs = layout.levels[0].attributes;
   const names = { POSITION: "position", NORMAL: "normal", TEXCOORD_0: "uv", COLOR_0: "color" };
   for (const [k, a] of Object.entries(attrs)) {
