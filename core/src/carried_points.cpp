@@ -29,17 +29,6 @@ double nearest2(Vec3 x, const Patch& patch, double enough, int* which = nullptr)
   return best;
 }
 
-// The new triangle whose projection on the plan's plane holds s (relative to the removed
-// vertex), or -1 when s lies outside the patch.
-int triangle_under(const Patch& patch, Vec2 s) {
-  for (int t = 0; t < patch.count; ++t) {
-    const auto& tri = patch.tri[t];
-    const Vec2 a = patch.p[tri[0]], b = patch.p[tri[1]], e = patch.p[tri[2]];
-    if (orient2d(a, b, s) >= 0 && orient2d(b, e, s) >= 0 && orient2d(e, a, s) >= 0) return t;
-  }
-  return -1;
-}
-
 } // namespace
 
 bool CarriedPoints::folds_input(uint32_t v, const Ring& ring, const Patch& patch,

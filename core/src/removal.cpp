@@ -96,6 +96,8 @@ Reject Planner::plan(uint32_t v, const Ring& ring, Vec3 n, Patch& out, double& c
     if (why == RejectCount && check_topology && carried_ &&
         carried_->folds_input(v, ring, out, *eval_, normals_))
       why = RejectFoldOver;
+    if (why == RejectCount && check_topology && input_ && input_->folds(out, *eval_))
+      why = RejectFoldOver;
     // A seam's sides are bounded together, by plan_seam.
     if (why == RejectCount && face_bound_ && open == OpenRing::Border)
       why = veto_bound(ring, out, eval_->position(v), face_bound_, *limits_);

@@ -6,6 +6,7 @@
 #include "candidates.h"
 #include "carried_points.h"
 #include "evaluation.h"
+#include "input_surface.h"
 #include "topology.h"
 #include "triangulation.h"
 #include "vetoes.h"
@@ -64,6 +65,8 @@ class Planner {
   void set_face_bounds(const float* face_bound) { face_bound_ = face_bound; }
   // Judges fold-overs against the input (CarriedPoints::folds_input) too. nullptr: not.
   void set_carried(const CarriedPoints* carried) { carried_ = carried; }
+  // Judges fold-overs against the input's nearest faces too (InputSurface::folds). nullptr: not.
+  void set_input(const InputSurface* input) { input_ = input; }
 
  private:
   const Evaluator* eval_;
@@ -75,6 +78,7 @@ class Planner {
   bool fans_, on_plane_;
   const float* face_bound_ = nullptr;
   const CarriedPoints* carried_ = nullptr;
+  const InputSurface* input_ = nullptr;
 };
 
 } // namespace vrs

@@ -212,6 +212,11 @@ void Simplifier::prepare() {
     note(v, first[v]);
     factor_[v] = static_cast<float>(first[v].priority);
   }
+  // The input's faces, for the relaxed passes' fold-over check (last_resort.cpp), copied once
+  // the first prices' scratch is gone (so that the copy does not raise the peak).
+  std::vector<Priced>().swap(first);
+  std::vector<uint8_t>().swap(kinds);
+  if (opt_.against_input && opt_.relax_to_reach_target) input_.keep(t);
 }
 
 } // namespace vrs

@@ -126,7 +126,7 @@ template <class Queue> void Simplifier::run(Queue& queue) {
       if (counts && jumps(p.stale ? p.priority : double(factor_[v]))) {
         // The cheapest removal left is far dearer than any so far: not at any cost (below).
         jump_price_ = p.stale ? p.priority : double(factor_[v]);
-        jump_from_ = rep_.max_removed_factor;
+        jump_from_ = jump_base();
         queue.push(v, jump_price_);
         break;
       }

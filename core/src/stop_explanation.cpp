@@ -34,7 +34,8 @@ std::string explain_remaining(const Remaining& r, bool simplify_boundary, bool l
   if (last_resort && r.refused[RejectFoldOver])
     out += "; the last resort stopped: every filling left for " +
            std::to_string(r.refused[RejectFoldOver]) +
-           " of them would fold the surface over the faces it replaces";
+           " of them would fold the surface over (against the faces it replaces or the input "
+           "nearest it)";
   add(r.untried, "without a usable plane (degenerate or non-finite neighbourhood)");
   return "remaining vertices: " + (out.empty() ? std::string("none") : out);
 }
@@ -44,10 +45,11 @@ std::string Simplifier::explain_stop() const {
     char why[400];
     std::snprintf(why, sizeof why,
                   "stopped short of the target: the cheapest removal left costs %.3g, %.0f times "
-                  "the dearest made so far (%.3g); the surface would change abruptly (a part "
+                  "the dearest made %s (%.3g); the surface would change abruptly (a part "
                   "dropped, a tunnel pressed flat, a thin wall crossed) rather than lose detail "
                   "(max_price_jump %g; 0 reaches the target at any cost)",
-                  jump_price_, jump_price_ / std::max(jump_from_, jump_floor_), jump_from_,
+                  jump_price_, jump_price_ / std::max(jump_from_, jump_floor_),
+                  relax_steps_ > 0 ? "before the vetoes were eased" : "so far", jump_from_,
                   opt_.max_price_jump);
     return why;
   }

@@ -2,6 +2,15 @@
 
 namespace vrs {
 
+int triangle_under(const Patch& patch, Vec2 s) {
+  for (int t = 0; t < patch.count; ++t) {
+    const auto& tri = patch.tri[t];
+    const Vec2 a = patch.p[tri[0]], b = patch.p[tri[1]], e = patch.p[tri[2]];
+    if (orient2d(a, b, s) >= 0 && orient2d(b, e, s) >= 0 && orient2d(e, a, s) >= 0) return t;
+  }
+  return -1;
+}
+
 bool is_convex(const Vec2* p, int k) {
   for (int i = 0; i < k; ++i)
     if (!(orient2d(p[i], p[(i + 1) % k], p[(i + 2) % k]) > 0)) return false;

@@ -28,6 +28,10 @@ struct Patch {
 
 bool is_convex(const Vec2* p, int k);
 
+// The new triangle whose projection on the plan's plane holds s (relative to the removed
+// vertex), or -1 when s lies outside the patch.
+int triangle_under(const Patch& patch, Vec2 s);
+
 // Score of a new triangle (a, b, c) in 3D: its shape quality times how squarely it faces the
 // projection normal n. Shape alone would happily pick a well-shaped triangle standing across
 // the surface (a chord through the solid); facing n keeps the patch on the surface.

@@ -56,15 +56,15 @@ TEST_P(RealMesh, KeepsTheInvariants) {
     EXPECT_GT(m.face_count(), target);
   }
   // 10 % is reached. At 1 %, a closed mesh reaches the target or stops where every filling
-  // left would fold the surface over the input (elephant: 122 faces for 56, a thin leg or
-  // trunk down to a prism; MeshLab's QECD with Preserve Topology gets there by folding 14 % of
-  // the area over); an open one with its boundary kept may stop short too, and then the report
-  // says the boundary is why.
+  // left would fold the surface over the input, or where the next removal would change the
+  // surface abruptly (elephant: 160 faces for 56, a thin leg or trunk down to a prism; MeshLab's
+  // QECD with Preserve Topology gets there by folding 14 % of the area over); an open one with
+  // its boundary kept may stop short too, and then the report says the boundary is why.
   if (ratio >= 0.1) {
     EXPECT_TRUE(r.target_reached) << m.face_count() << " faces for " << target;
   } else if (before.boundary == 0) {
     if (double(m.face_count()) > std::max(1.05 * double(target), double(target + 8))) {
-      EXPECT_NE(r.stop_detail.find("would fold"), std::string::npos) << r.stop_detail;
+      EXPECT_TRUE(vrs_test::stops_faithfully(r.stop_detail)) << r.stop_detail;
     }
   } else if (!r.target_reached) {
     EXPECT_NE(r.stop_detail.find("boundary simplification is off"), std::string::npos)
@@ -106,8 +106,9 @@ TEST(FoldOverCheck, CatchesANewFaceTurnedOver) {
 
 // What the fans are for: on elephant at 1 % the paper's projection alone runs out of removals
 // far above the target (278 faces for 56); the best of projection and fans goes less than half
-// as far from it, and stops where every filling left would fold the surface over the input
-// (122; with the input-normal veto lifted it reached 56 with 14 % of its area folded over).
+// as far from it, and stops where every filling left would fold the surface over the input or
+// change it abruptly (160; with the input-normal veto lifted it reached 56 with 14 % of its
+// area folded over).
 TEST(Fill, BestReachesWhatTheProjectionAloneCannot) {
   const std::string path = vrs_test::cgal_mesh("elephant.off");
   if (path.empty()) GTEST_FAIL() << "elephant.off missing: run scripts/setup.sh";
@@ -129,7 +130,7 @@ TEST(Fill, BestReachesWhatTheProjectionAloneCannot) {
   EXPECT_GT(double(faces[0]), 2.0 * double(target)) << "projection alone";
   EXPECT_LT(2 * (faces[1] - target), faces[0] - target) << "best";
   if (faces[1] > target + 2) {
-    EXPECT_NE(why.find("would fold"), std::string::npos) << why;
+    EXPECT_TRUE(vrs_test::stops_faithfully(why)) << why;
   }
 }
 
@@ -137,8 +138,9 @@ TEST(Fill, BestReachesWhatTheProjectionAloneCannot) {
 // shuffled one), folding parts over to get there. Before the last resort's least-cost filling,
 // elk stopped at 44 faces for 33 and femur at 104 for 78; with the fold-over judged against
 // the input (not only the faces a removal replaces), elk, femur and spool stop short again
-// (80, 90, 32 faces), where every filling left would fold: faithfully, and saying so. The
-// shuffled blobby, its faces in random orientation, gets there. Every invariant kept.
+// where every filling left would fold or the surface would change abruptly (128, 304, 86
+// faces since the relaxed passes answer to the input's nearest faces): faithfully, and saying
+// so. The shuffled blobby, its faces in random orientation, gets there. Every invariant kept.
 TEST(Targets, ClosedMeshesReachTheTargetOrStopWhereOnlyFoldsAreLeft) {
   for (auto [name, ratio] : {std::pair{"elk.off", 0.01},
                              {"femur.off", 0.01},
@@ -154,10 +156,10 @@ TEST(Targets, ClosedMeshesReachTheTargetOrStopWhereOnlyFoldsAreLeft) {
     o.target.ratio = ratio;
     const Report r = simplify(m, o);
     const double target = std::llround(ratio * double(in.face_count()));
-    // Reached, or stopped short where every filling left would fold over the input (never
-    // folded to get there: check_run below).
+    // Reached, or stopped short where every filling left would fold over the input or change
+    // the surface abruptly (never folded to get there: check_run below).
     if (double(m.face_count()) > std::max(1.05 * target, target + 2)) {
-      EXPECT_NE(r.stop_detail.find("would fold"), std::string::npos)
+      EXPECT_TRUE(vrs_test::stops_faithfully(r.stop_detail))
           << name << " at " << ratio << ": " << r.stop_detail;
     }
     EXPECT_EQ(vrs_test::check_run(in, m, o, r), "") << name << " at " << ratio;

@@ -137,4 +137,39 @@ size_t count_fold_overs(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Re
   return folds;
 }
 
+size_t count_faces_against_nearest_input(const vrs::Mesh& in, const vrs::Mesh& out) {
+  if (in.face_count() == 0) return 0;
+  FaceGrid grid(in);
+  auto distance = [&](uint32_t f, Vec3 x) {
+    return vrs::point_triangle_distance(x, at(in, in.triangles[3 * f]),
+                                        at(in, in.triangles[3 * f + 1]),
+                                        at(in, in.triangles[3 * f + 2]));
+  };
+  auto normal = [&](const vrs::Mesh& m, size_t f) {
+    Vec3 a = at(m, m.triangles[3 * f]);
+    return vrs::normalized(
+        vrs::cross(at(m, m.triangles[3 * f + 1]) - a, at(m, m.triangles[3 * f + 2]) - a));
+  };
+  size_t folds = 0;
+  for (size_t f = 0; f < out.face_count(); ++f) {
+    Vec3 a = at(out, out.triangles[3 * f]), b = at(out, out.triangles[3 * f + 1]),
+         c = at(out, out.triangles[3 * f + 2]);
+    const Vec3 n = normal(out, f), x = (a + b + c) * (1.0 / 3);
+    if (!vrs::is_finite(x) || vrs::length(n) == 0) continue;
+    double nearest = INFINITY;
+    for (double radius = grid.cell(); !(nearest <= radius); radius *= 2) {
+      grid.near(x, radius, [&](uint32_t g) { nearest = std::min(nearest, distance(g, x)); });
+      if (radius > 1e30) break;
+    }
+    if (!std::isfinite(nearest)) continue;
+    const double reach = nearest * (1 + 1e-6) + 1e-12;
+    bool agrees = false;
+    grid.near(x, reach, [&](uint32_t g) {
+      agrees = agrees || (distance(g, x) <= reach && vrs::dot(n, normal(in, g)) > 0);
+    });
+    folds += !agrees;
+  }
+  return folds;
+}
+
 } // namespace vrs_test

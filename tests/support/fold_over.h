@@ -16,4 +16,9 @@ namespace vrs_test {
 // surface is.
 size_t count_fold_overs(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Report& r);
 
+// The benchmark's measure, per face: output faces turned more than 90° from the input face
+// nearest their centroid (where several are nearest, one agreeing is enough). Stricter than
+// count_fold_overs: a face across a thin part, nearer its far side, counts.
+size_t count_faces_against_nearest_input(const vrs::Mesh& in, const vrs::Mesh& out);
+
 } // namespace vrs_test

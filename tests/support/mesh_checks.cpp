@@ -514,4 +514,9 @@ std::string check_rerun(const vrs::Mesh& in, const vrs::Options& o, const vrs::M
   return {};
 }
 
+bool stops_faithfully(const std::string& stop_detail) {
+  return stop_detail.find("would fold") != std::string::npos ||
+         stop_detail.find("would change abruptly") != std::string::npos;
+}
+
 } // namespace vrs_test

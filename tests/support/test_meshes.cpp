@@ -1,5 +1,6 @@
 #include "test_meshes.h"
 
+#include <array>
 #include <cmath>
 #include <fstream>
 #include <map>
@@ -163,6 +164,65 @@ vrs::Mesh icosphere(int level) {
     }
     m.triangles = next;
   }
+  return m;
+}
+
+vrs::Mesh plate_with_holes(int nx, int ny, const std::vector<std::pair<int, int>>& holes,
+                           float thickness, int wall_rows) {
+  auto solid = [&](int x, int y) {
+    if (x < 0 || y < 0 || x >= nx || y >= ny) return false;
+    for (const auto& h : holes)
+      if (h.first == x && h.second == y) return false;
+    return true;
+  };
+  vrs::Mesh m;
+  std::map<std::array<int, 3>, uint32_t> index; // (x, y, row) -> vertex, row 0 bottom
+  auto vertex = [&](int x, int y, int row) {
+    auto [it, fresh] = index.insert({{x, y, row}, uint32_t(m.vertex_count())});
+    if (fresh)
+      m.positions.insert(m.positions.end(),
+                         {float(x), float(y), thickness * float(row) / float(wall_rows)});
+    return it->second;
+  };
+  // A triangle facing `out` (its corners' order is chosen by that).
+  auto triangle = [&](uint32_t a, uint32_t b, uint32_t c, const std::array<float, 3>& out) {
+    const float* p = m.positions.data();
+    float u[3], w[3];
+    for (int k = 0; k < 3; ++k)
+      u[k] = p[3 * b + k] - p[3 * a + k], w[k] = p[3 * c + k] - p[3 * a + k];
+    const float n[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2],
+                        u[0] * w[1] - u[1] * w[0]};
+    if (n[0] * out[0] + n[1] * out[1] + n[2] * out[2] < 0) std::swap(b, c);
+    m.triangles.insert(m.triangles.end(), {a, b, c});
+  };
+  for (int y = 0; y < ny; ++y)
+    for (int x = 0; x < nx; ++x) {
+      if (!solid(x, y)) continue;
+      for (int side = 0; side < 2; ++side) { // bottom, top
+        const int row = side * wall_rows;
+        const std::array<float, 3> out{0, 0, side ? 1.0f : -1.0f};
+        triangle(vertex(x, y, row), vertex(x + 1, y, row), vertex(x + 1, y + 1, row), out);
+        triangle(vertex(x, y, row), vertex(x + 1, y + 1, row), vertex(x, y + 1, row), out);
+      }
+      // Walls where the next cell is a hole or outside: from (x0, y0) to (x1, y1), facing out.
+      const int dx[4] = {1, -1, 0, 0}, dy[4] = {0, 0, 1, -1};
+      for (int d = 0; d < 4; ++d) {
+        if (solid(x + dx[d], y + dy[d])) continue;
+        int x0, y0, x1, y1;
+        if (dx[d] != 0) {
+          x0 = x1 = dx[d] > 0 ? x + 1 : x;
+          y0 = y, y1 = y + 1;
+        } else {
+          y0 = y1 = dy[d] > 0 ? y + 1 : y;
+          x0 = x, x1 = x + 1;
+        }
+        const std::array<float, 3> out{float(dx[d]), float(dy[d]), 0};
+        for (int r = 0; r < wall_rows; ++r) {
+          triangle(vertex(x0, y0, r), vertex(x1, y1, r), vertex(x1, y1, r + 1), out);
+          triangle(vertex(x0, y0, r), vertex(x1, y1, r + 1), vertex(x0, y0, r + 1), out);
+        }
+      }
+    }
   return m;
 }
 

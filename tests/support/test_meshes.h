@@ -2,6 +2,8 @@
 #pragma once
 
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "vrs/simplify.h"
 
@@ -24,5 +26,11 @@ vrs::Mesh grid(int n, float jitter = 0.0f);
 vrs::Mesh terrain(int n);
 // Icosphere: 20 * 4^level triangles, closed, genus 0.
 vrs::Mesh icosphere(int level);
+// A closed plate of nx x ny unit cells, `thickness` thick, with a square through-hole at each
+// cell (x, y) listed in `holes` (pairs): genus = the number of holes. Each cell is two
+// triangles on each side; the walls are split `wall_rows` times along the thickness (a CAD
+// tessellation's long thin triangles).
+vrs::Mesh plate_with_holes(int nx, int ny, const std::vector<std::pair<int, int>>& holes,
+                           float thickness, int wall_rows = 1);
 
 } // namespace vrs_test

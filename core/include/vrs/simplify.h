@@ -126,10 +126,13 @@ struct Options {
   // prices them all at once (the paper's way, and always with Priority::Factor, whose price
   // is cheap). Lazy halves the work or better; a neighbour whose price fell waits in place.
   bool lazy_reevaluation = true;
-  // With Priority::LocalError: each removed vertex is carried by the face nearest it, and a
-  // removal is refused where a new triangle would face against the input's normal at a vertex
-  // it carries (a fold-over judged against the input, not against faces that may already lean
-  // far from it). Costs 4 bytes a vertex and a face, and about an eighth more time.
+  // Fold-overs judged against the input, not only against faces that may already lean far
+  // from it. With Priority::LocalError: each removed vertex is carried by the face nearest it,
+  // and a removal is refused where a new triangle would face against the input's normal at a
+  // vertex it carries (4 bytes a vertex and a face, about an eighth more time). Once the
+  // vetoes are eased to reach a count target (Report::relaxed_removals), with either
+  // priority, a new triangle must also not turn more than 90 degrees from the input face
+  // nearest it (the input's faces are kept for that: 12 bytes a face).
   bool against_input = true;
   // With Priority::LocalError and a count target: when the cheapest removal left would cost
   // more than this many times the dearest one made so far (and more than 1e-3 of the

@@ -1,0 +1,209 @@
+#include "input_surface.h"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdlib>
+#include <limits>
+
+#include "local_error.h"
+
+namespace vrs {
+
+void InputSurface::order_faces(const Evaluator& eval) {
+  // Top-down median splits on the centroids' widest axis, into the implicit layout the levels
+  // read: a node of 2^l leaf slots gives its left child exactly 2^(l-1) * kLeaf faces (or all
+  // it has), so node i of a level has children 2i and 2i + 1 below.
+  const size_t faces = tris_.size() / 3;
+  std::vector<std::array<float, 3>> centre(faces);
+  for (size_t f = 0; f < faces; ++f) {
+    const Vec3 c = (eval.position(tris_[3 * f]) + eval.position(tris_[3 * f + 1]) +
+                    eval.position(tris_[3 * f + 2])) *
+                   (1.0 / 3);
+    centre[f] = {float(c.x), float(c.y), float(c.z)};
+  }
+  std::vector<uint32_t> order(faces);
+  for (size_t f = 0; f < faces; ++f)
+    order[f] = uint32_t(f);
+  size_t slots = 1;
+  while (slots * kLeaf < faces)
+    slots *= 2;
+  struct Range {
+    size_t begin, end, slots;
+  };
+  std::vector<Range> todo{{0, faces, slots}};
+  while (!todo.empty()) {
+    const Range r = todo.back();
+    todo.pop_back();
+    if (r.slots <= 1 || r.end - r.begin <= size_t(kLeaf)) continue;
+    const size_t left = std::min(r.end, r.begin + r.slots / 2 * kLeaf);
+    if (left < r.end) {
+      float lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+      for (size_t i = r.begin; i < r.end; ++i)
+        for (int a = 0; a < 3; ++a)
+          lo[a] = std::min(lo[a], centre[order[i]][a]),
+          hi[a] = std::max(hi[a], centre[order[i]][a]);
+      int axis = 0;
+      for (int a = 1; a < 3; ++a)
+        if (hi[a] - lo[a] > hi[axis] - lo[axis]) axis = a;
+      std::nth_element(order.begin() + r.begin, order.begin() + left, order.begin() + r.end,
+                       [&](uint32_t x, uint32_t y) { return centre[x][axis] < centre[y][axis]; });
+      todo.push_back({left, r.end, r.slots / 2});
+    }
+    todo.push_back({r.begin, left, r.slots / 2});
+  }
+  std::vector<uint32_t> sorted(tris_.size());
+  for (size_t i = 0; i < faces; ++i)
+    for (int k = 0; k < 3; ++k)
+      sorted[3 * i + k] = tris_[3 * order[i] + k];
+  tris_.swap(sorted);
+}
+
+void InputSurface::build(const Evaluator& eval) {
+  if (!levels_.empty()) return;
+  size_t kept = 0;
+  for (size_t i = 0; i + 2 < tris_.size(); i += 3) {
+    const Vec3 a = eval.position(tris_[i]), b = eval.position(tris_[i + 1]),
+               c = eval.position(tris_[i + 2]);
+    if (is_finite(a) && is_finite(b) && is_finite(c) && length(cross(b - a, c - a)) > 0)
+      for (int k = 0; k < 3; ++k)
+        tris_[kept++] = tris_[i + k];
+  }
+  tris_.resize(kept);
+  const size_t faces = tris_.size() / 3;
+  if (faces == 0) return;
+  order_faces(eval);
+  std::vector<Box> level((faces + kLeaf - 1) / kLeaf);
+  for (size_t l = 0; l < level.size(); ++l) {
+    Box& b = level[l];
+    std::fill(b.lo, b.lo + 3, std::numeric_limits<float>::infinity());
+    std::fill(b.hi, b.hi + 3, -std::numeric_limits<float>::infinity());
+    for (size_t f = l * kLeaf; f < std::min(faces, (l + 1) * kLeaf); ++f)
+      for (int c = 0; c < 3; ++c) {
+        const Vec3 p = eval.position(tris_[3 * f + c]);
+        const float x[3] = {float(p.x), float(p.y), float(p.z)}; // positions are floats
+        for (int a = 0; a < 3; ++a)
+          b.lo[a] = std::min(b.lo[a], x[a]), b.hi[a] = std::max(b.hi[a], x[a]);
+      }
+  }
+  levels_.push_back(std::move(level));
+  while (levels_.back().size() > 1) {
+    const std::vector<Box>& below = levels_.back();
+    std::vector<Box> up((below.size() + 1) / 2);
+    for (size_t i = 0; i < up.size(); ++i) {
+      up[i] = below[2 * i];
+      if (2 * i + 1 < below.size())
+        for (int a = 0; a < 3; ++a)
+          up[i].lo[a] = std::min(up[i].lo[a], below[2 * i + 1].lo[a]),
+          up[i].hi[a] = std::max(up[i].hi[a], below[2 * i + 1].hi[a]);
+    }
+    levels_.push_back(std::move(up));
+  }
+}
+
+double InputSurface::box_distance2(const Box& b, Vec3 x) const {
+  const double p[3] = {x.x, x.y, x.z};
+  double d2 = 0;
+  for (int a = 0; a < 3; ++a) {
+    const double d = p[a] < b.lo[a] ? b.lo[a] - p[a] : p[a] > b.hi[a] ? p[a] - b.hi[a] : 0.0;
+    d2 += d * d;
+  }
+  return d2;
+}
+
+bool InputSurface::nearest(Vec3 x, const Evaluator& eval, double& d2, Vec3& normal) const {
+  if (levels_.empty()) return false;
+  double best = std::numeric_limits<double>::infinity();
+  size_t best_face = 0;
+  // Depth-first, nearer child first; a node is (level, index). The depth is log2 of the
+  // leaves: 64 entries hold any mesh.
+  std::array<std::pair<uint8_t, uint32_t>, 64> stack;
+  int top = 0;
+  stack[top++] = {uint8_t(levels_.size() - 1), 0u};
+  while (top > 0) {
+    const auto [level, index] = stack[--top];
+    if (box_distance2(levels_[level][index], x) >= best) continue;
+    if (level == 0) {
+      const size_t faces = tris_.size() / 3;
+      for (size_t f = size_t(index) * kLeaf; f < std::min(faces, size_t(index + 1) * kLeaf); ++f) {
+        const double d = point_triangle_distance2(x, eval.position(tris_[3 * f]),
+                                                  eval.position(tris_[3 * f + 1]),
+                                                  eval.position(tris_[3 * f + 2]));
+        if (d < best) best = d, best_face = f;
+      }
+      continue;
+    }
+    const std::vector<Box>& below = levels_[level - 1];
+    const uint32_t a = 2 * index, b = 2 * index + 1;
+    if (b >= below.size()) {
+      stack[top++] = {uint8_t(level - 1), a};
+      continue;
+    }
+    const double da = box_distance2(below[a], x), db = box_distance2(below[b], x);
+    // The nearer one is popped first.
+    if (da <= db) {
+      if (db < best) stack[top++] = {uint8_t(level - 1), b};
+      if (da < best) stack[top++] = {uint8_t(level - 1), a};
+    } else {
+      if (da < best) stack[top++] = {uint8_t(level - 1), a};
+      if (db < best) stack[top++] = {uint8_t(level - 1), b};
+    }
+  }
+  if (!(best < std::numeric_limits<double>::infinity())) return false;
+  normal = face_normal(best_face, eval);
+  d2 = best;
+  return true;
+}
+
+Vec3 InputSurface::face_normal(size_t f, const Evaluator& eval) const {
+  const Vec3 a = eval.position(tris_[3 * f]);
+  return normalized(
+      cross(eval.position(tris_[3 * f + 1]) - a, eval.position(tris_[3 * f + 2]) - a));
+}
+
+bool InputSurface::any_agrees(Vec3 x, double r2, Vec3 n, const Evaluator& eval) const {
+  std::array<std::pair<uint8_t, uint32_t>, 64> stack;
+  int top = 0;
+  stack[top++] = {uint8_t(levels_.size() - 1), 0u};
+  const size_t faces = tris_.size() / 3;
+  while (top > 0) {
+    const auto [level, index] = stack[--top];
+    if (box_distance2(levels_[level][index], x) > r2) continue;
+    if (level == 0) {
+      for (size_t f = size_t(index) * kLeaf; f < std::min(faces, size_t(index + 1) * kLeaf); ++f)
+        if (dot(face_normal(f, eval), n) > 0 &&
+            point_triangle_distance2(x, eval.position(tris_[3 * f]),
+                                     eval.position(tris_[3 * f + 1]),
+                                     eval.position(tris_[3 * f + 2])) <= r2)
+          return true;
+      continue;
+    }
+    const size_t below = levels_[level - 1].size();
+    if (2 * index + 1 < below) stack[top++] = {uint8_t(level - 1), 2 * index + 1};
+    stack[top++] = {uint8_t(level - 1), 2 * index};
+  }
+  return false;
+}
+
+bool InputSurface::folds(const Patch& patch, const Evaluator& eval) const {
+  for (int t = 0; t < patch.count; ++t) {
+    const auto& tri = patch.tri[t];
+    const Vec3 a = patch.q[tri[0]], b = patch.q[tri[1]], c = patch.q[tri[2]];
+    const Vec3 n = normalized(cross(b - a, c - a));
+    const Vec3 m = (a + b + c) * (1.0 / 3);
+    static const bool one = std::getenv("VRS_ONESAMPLE") != nullptr;
+    const Vec3 xs[4] = {m, (m + a) * 0.5, (m + b) * 0.5, (m + c) * 0.5};
+    for (int i = 0; i < (one ? 1 : 4); ++i) {
+      const Vec3 x = xs[i];
+      double d2;
+      Vec3 nearest_normal;
+      if (!nearest(x, eval, d2, nearest_normal) || dot(nearest_normal, n) > 0) continue;
+      // Ties (an input edge or crease nearest): measured again with a hair of slack.
+      const double r2 = d2 * (1 + 1e-6) + 1e-24;
+      if (!any_agrees(x, r2, n, eval)) return true;
+    }
+  }
+  return false;
+}
+
+} // namespace vrs
