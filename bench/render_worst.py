@@ -30,6 +30,8 @@ def mesh_paths():
         name = os.path.splitext(os.path.basename(path))[0]
         s = "assimp" if path.startswith("/usr/share/assimp/") else "cad" if "/cad-parts-" in path else "cgal"
         out.setdefault((s, name), path)
+        # bench_quality.sh names one model in several formats NAME-EXT (Wuson-off, Wuson-stl).
+        out.setdefault((s, f"{name}-{os.path.splitext(path)[1][1:]}"), path)
     return out
 
 

@@ -6,8 +6,9 @@
 # the default ("ours"), the boundary simplified ("ours-boundary", for the open meshes, as QECD
 # does), the paper's factor ("ours-factor"), the vertex-keeping class (MeshLab's QECD with
 # optimal placement off, OpenMesh's decimater with its quadric module, meshoptimizer,
-# vtkDecimatePro), MeshLab's QECD with its defaults (the yardstick) and with Preserve Topology,
-# and the core of BASELINE (default: c17c674, main before the tail work of issue 28; built once into
+# vtkDecimatePro), MeshLab's QECD with its defaults (the yardstick), with Preserve Topology and
+# at the face count ours ends with (qecd-at-ours: equal size where ours stops short),
+# and the core of BASELINE (default: ea2b941, main before the relaxed passes answered to the input; built once into
 # $VRS_CACHE). One job per core (meshes shared out), one thread per run. Writes
 # bench/quality.csv and bench/QUALITY.md (bench/quality_report.py: medians and clamped
 # geometric means, the class table, the held-out meshes apart, the worst runs).
@@ -18,8 +19,8 @@
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
 cache=${VRS_CACHE:-/var/cache/vrsimplify}
-samples=30000 baseline=c17c674 only=() tuning=0 csv="" \
-  methods=ours,ours-boundary,ours-factor,qecd,qecd-topology,qecd-keep,openmesh,meshopt,vtk
+samples=30000 baseline=ea2b941 only=() tuning=0 csv="" \
+  methods=ours,ours-boundary,ours-factor,qecd,qecd-topology,qecd-keep,qecd-at-ours,openmesh,meshopt,vtk
 while [ $# -gt 0 ]; do
   case $1 in
   --samples) samples=$2; shift 2 ;;

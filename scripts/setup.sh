@@ -2,7 +2,8 @@
 # Installs what a fresh Debian bookworm machine lacks to build and test vrsimplify (MeshLab
 # 2020.09 included), then fetches the sources the build reads but the repository never holds
 # (vcglib and MeshLab's headers: 2020.09 from Debian's `meshlab` source package, 2022.02 and
-# 2025.07 from trixie's and sid's, see scripts/lib/meshlab_sources.sh), the real test meshes
+# 2025.07 from trixie's and sid's, see scripts/lib/meshlab_sources.sh; meshoptimizer's encoder
+# for compressed .glb files, scripts/lib/meshoptimizer_sources.sh), the real test meshes
 # (Debian's `libcgal-demo`) and pymeshlab with the Python test tools, pinned
 # (requirements.txt), into a virtual environment under $VRS_CACHE (default /var/cache/vrsimplify),
 # and the viewer page's tools (scripts/lib/web_deps.sh: Node.js, Chromium, pinned npm packages).
@@ -80,6 +81,8 @@ fi
 for v in 2022.02 2025.07; do
   "$top/scripts/lib/meshlab_sources.sh" "$v" "$third/meshlab-$v"
 done
+# meshoptimizer's encoder, for the .glb writer's EXT_meshopt_compression (gltf/CMakeLists.txt).
+"$top/scripts/lib/meshoptimizer_sources.sh" "$third/meshoptimizer"
 
 # pymeshlab, pytest, trimesh and auditwheel, pinned, in a virtual environment of their own
 # (rebuilt when requirements.txt changes). Debian's python3, whatever else is on PATH.

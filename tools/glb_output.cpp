@@ -190,6 +190,7 @@ int run_glb(const GlbRequest& r) {
   g.corner_uvs = or_null(a.corner_uvs);
   g.texture_uri = uri;
   g.generator = std::string("vrsimplify ") + VRS_VERSION;
+  g.compress = r.compress;
   // Each level's bound is against the finer level: against the input they add up.
   std::vector<double> bounds;
   double sum = 0;
@@ -207,10 +208,10 @@ int run_glb(const GlbRequest& r) {
   const double total = std::chrono::duration<double>(clock::now() - t0).count();
   if (r.json) {
     std::printf("{\"input_vertices\":%zu,\"input_faces\":%zu,\"file_bytes\":%zu,"
-                "\"gltf_vertices\":%zu,\"seconds_simplify\":%.6f,\"seconds_total\":%.6f,"
-                "\"levels\":[",
+                "\"gltf_vertices\":%zu,\"compressed\":%s,\"seconds_simplify\":%.6f,"
+                "\"seconds_total\":%.6f,\"levels\":[",
                 mesh.vertex_count(), mesh.face_count(), layout.file_bytes, layout.vertex_count,
-                seconds, total);
+                layout.compressed ? "true" : "false", seconds, total);
     for (size_t k = 0; k < chain.levels.size(); ++k) {
       const auto& l = chain.levels[k];
       const auto& L = layout.levels[k];
@@ -225,8 +226,10 @@ int run_glb(const GlbRequest& r) {
     return 0;
   }
   std::printf("input:   %zu vertices, %zu faces\n", mesh.vertex_count(), mesh.face_count());
-  std::printf("output:  %s, %zu levels, %zu bytes, %zu glTF vertices (split at seams)\n",
-              r.output.c_str(), chain.levels.size(), layout.file_bytes, layout.vertex_count);
+  std::printf("output:  %s, %zu levels, %zu bytes%s, %zu glTF vertices (split at seams%s)\n",
+              r.output.c_str(), chain.levels.size(), layout.file_bytes,
+              layout.compressed ? " (EXT_meshopt_compression)" : "", layout.vertex_count,
+              layout.compressed ? ", padded to the codec's blocks" : "");
   for (size_t k = 0; k < chain.levels.size(); ++k) {
     const auto& l = chain.levels[k];
     const auto& L = layout.levels[k];

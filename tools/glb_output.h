@@ -14,6 +14,7 @@ struct GlbRequest {
   std::vector<double> ratios; // the levels, finest first after sorting; {target} without --lods
   vrs::Options options;       // its target is ignored
   bool error_bound = false;   // record each level's certified bound (in the mesh's extras)
+  bool compress = false;      // EXT_meshopt_compression
   bool json = false;
 };
 

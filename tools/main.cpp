@@ -76,6 +76,9 @@ const char* kUsage =
     "                                  sharing one vertex buffer, coarsest level first, bound\n"
     "                                  by MSFT_lod; N: N levels halving from 1 (the input).\n"
     "                                  Without --lods a .glb holds the --ratio level alone\n"
+    "  --compress                      EXT_meshopt_compression (meshoptimizer's codec,\n"
+    "                                  lossless: positions stay the input's floats); the\n"
+    "                                  levels still stream coarsest first\n"
     "bigger than memory (tiled, out of core; with --ratio):\n"
     "  --memory SIZE                   memory budget (512M, 2G, ...): a mesh that does not\n"
     "                                  fit is streamed into tiles simplified on local worker\n"
@@ -209,6 +212,7 @@ int main(int argc, char** argv) {
   bool max_error_percent = false, error_bound = false;
   vrs_tool::TiledRequest tiled; // --memory / --scheduler
   std::vector<double> lods;     // --lods: levels of detail into one .glb
+  bool compress = false;        // --compress: the .glb with EXT_meshopt_compression
   std::string not_tiled;        // the first option a tiled run would not honour
   for (int i = 1; i < argc; ++i) {
     std::string a = argv[i];
@@ -243,6 +247,8 @@ int main(int argc, char** argv) {
     } else if (a == "--version") {
       std::printf("vrsimplify %s\n", VRS_VERSION);
       return 0;
+    } else if (a == "--compress") {
+      compress = true;
     } else if (a == "--json") {
       json = true;
     } else if (a == "--ascii") {
@@ -379,6 +385,8 @@ int main(int argc, char** argv) {
                        ": the output must end in .ply, .off, .obj, .stl or .glb");
   if (!lods.empty() && !is_glb(out))
     return usage_error("--lods writes one .glb with every level: OUTPUT must end in .glb");
+  if (compress && !is_glb(out))
+    return usage_error("--compress applies to a .glb output (EXT_meshopt_compression)");
   if (is_glb(out)) {
     if (tiled.memory || !tiled.scheduler.empty())
       return usage_error("tiled runs (--memory, --scheduler) write the input's format, not .glb");
@@ -390,6 +398,7 @@ int main(int argc, char** argv) {
                          "each level's bound)");
     vrs_tool::GlbRequest g;
     g.input = in, g.output = out, g.options = opt, g.json = json, g.error_bound = error_bound;
+    g.compress = compress;
     g.ratios = lods.empty() ? std::vector<double>{opt.target.ratio} : lods;
     if (lods.empty() && !(opt.target.ratio > 0 && opt.target.ratio <= 1))
       return usage_error("--ratio for a .glb must be in (0, 1]");

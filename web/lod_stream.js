@@ -1,7 +1,10 @@
 // Reads a vrsimplify levels-of-detail .glb level by level, coarsest first, through HTTP range
 // requests (or slices of a dropped file): the header and JSON first, then for each level only
 // the vertices it adds to the shared prefix and its own indices. No three.js here: the viewer
-// turns each level into geometry.
+// turns each level into geometry. A file with EXT_meshopt_compression streams the same way:
+// each level's vertices end on a block of the vertex codec, so the compressed stream's first
+// bytes and its tail (kept in the JSON) decode that prefix alone (gltf/src/meshopt_streams.h);
+// the caller hands in meshoptimizer's decoder.
 
 const GLB_MAGIC = 0x46546c67;
 
@@ -42,14 +45,16 @@ export function describe(json, binStart) {
     const position = json.accessors[prim.attributes.POSITION];
     const index = json.accessors[prim.indices];
     const indexView = json.bufferViews[index.bufferView];
+    const packed = indexView.extensions?.EXT_meshopt_compression; // its bytes in the file
     return {
       name: mesh.name,
       extras: mesh.extras?.vrsimplify ?? {},
       vertices: position.count,
       faces: index.count / 3,
-      indexStart: binStart + (indexView.byteOffset ?? 0) + (index.byteOffset ?? 0),
-      indexBytes: index.count * (index.componentType === 5125 ? 4 : 2),
+      indexStart: binStart + (packed ? packed.byteOffset ?? 0 : (indexView.byteOffset ?? 0) + (index.byteOffset ?? 0)),
+      indexBytes: packed ? packed.byteLength : index.count * (index.componentType === 5125 ? 4 : 2),
       indexType: index.componentType,
+      indexCount: index.count,
       attributes: Object.fromEntries(Object.entries(prim.attributes).map(([k, a]) => {
         const acc = json.accessors[a];
         return [k, { offset: acc.byteOffset ?? 0, type: acc.type, componentType: acc.componentType,
@@ -59,9 +64,16 @@ export function describe(json, binStart) {
   });
   const finest = json.accessors[json.meshes[json.nodes[nodeIds[0]].mesh].primitives[0].attributes.POSITION];
   const vertexView = json.bufferViews[finest.bufferView];
+  const packed = vertexView.extensions?.EXT_meshopt_compression;
+  const tail = vertexView.extras?.vrsimplify?.tail;
   return {
     levels,
-    vertexStart: binStart + (vertexView.byteOffset ?? 0),
+    // Compressed: where the stream lies, its tail, and each level's bytes of it.
+    compressed: packed && {
+      bytes: packed.byteLength,
+      tail: tail && Uint8Array.from(atob(tail), (c) => c.charCodeAt(0)),
+    },
+    vertexStart: binStart + (packed ? packed.byteOffset ?? 0 : vertexView.byteOffset ?? 0),
     stride: vertexView.byteStride ?? 12,
     image: json.images?.[0]?.uri,
     coverage: node.extras?.MSFT_screencoverage,
@@ -70,7 +82,8 @@ export function describe(json, binStart) {
 
 // Streams the levels coarsest first: onLevel({level, index, vertexBytes, indices, layout})
 // gets the whole vertex prefix so far (one growing buffer) and that level's indices.
-export async function streamLevels(source, onLevel, { stopAfter } = {}) {
+// `decoder`: meshoptimizer's (three/addons/libs/meshopt_decoder.module.js), for compressed files.
+export async function streamLevels(source, onLevel, { stopAfter, decoder } = {}) {
   const head = new DataView(await source.read(0, 20));
   if (head.getUint32(0, true) !== GLB_MAGIC) throw new Error("not a binary glTF (.glb)");
   const total = head.getUint32(8, true);
@@ -80,6 +93,7 @@ export async function streamLevels(source, onLevel, { stopAfter } = {}) {
   const layout = describe(json, 20 + jsonBytes + 8);
   layout.total = total;
   layout.json = json;
+  if (layout.compressed) return streamCompressed(source, layout, onLevel, stopAfter, decoder);
   const vertices = new Uint8Array(layout.levels[0].vertices * layout.stride);
   let have = 0; // vertices received so far
   for (let k = layout.levels.length - 1; k >= 0; --k) {
@@ -102,6 +116,50 @@ export async function streamLevels(source, onLevel, { stopAfter } = {}) {
     have = Math.max(have, want);
     const indices = level.indexType === 5125 ? new Uint32Array(indexBuffer) : new Uint16Array(indexBuffer);
     await onLevel({ level, index: k, vertices: vertices.subarray(0, want), indices, layout });
+    if (stopAfter !== undefined && k <= stopAfter) break;
+  }
+  return layout;
+}
+
+// The same for EXT_meshopt_compression: the stream's bytes so far, each level decoded from
+// its prefix of them with the tail appended (a valid stream of that prefix), its indices from
+// their own compressed bytes.
+async function streamCompressed(source, layout, onLevel, stopAfter, decoder) {
+  const packed = layout.compressed;
+  if (!decoder) throw new Error("a compressed .glb (EXT_meshopt_compression) needs meshoptimizer's decoder");
+  if (!packed.tail) throw new Error("this compressed .glb cannot stream (no tail of its vertex stream in the JSON)");
+  await decoder.ready;
+  const stream = new Uint8Array(packed.bytes);
+  let have = 0; // stream bytes received so far
+  for (let k = layout.levels.length - 1; k >= 0; --k) {
+    const level = layout.levels[k];
+    const want = k === 0 ? packed.bytes - packed.tail.length : level.extras.streamBytes;
+    if (!(want > 0)) throw new Error(`level ${k} does not say which bytes of the vertex stream hold it`);
+    let packedIndices;
+    const gap = layout.vertexStart - (level.indexStart + level.indexBytes); // padding to 4 bytes
+    if (k === layout.levels.length - 1 && gap >= 0 && gap < 4) {
+      const both = new Uint8Array(await source.read(level.indexStart, layout.vertexStart + want));
+      stream.set(both.subarray(level.indexBytes + gap), 0);
+      packedIndices = both.slice(0, level.indexBytes);
+    } else {
+      const [added, idx] = await Promise.all([
+        want > have ? source.read(layout.vertexStart + have, layout.vertexStart + want) : new ArrayBuffer(0),
+        source.read(level.indexStart, level.indexStart + level.indexBytes),
+      ]);
+      stream.set(new Uint8Array(added), have);
+      packedIndices = new Uint8Array(idx);
+    }
+    have = Math.max(have, want);
+    const prefix = new Uint8Array(want + packed.tail.length);
+    prefix.set(stream.subarray(0, want), 0);
+    prefix.set(packed.tail, want);
+    const vertices = new Uint8Array(level.vertices * layout.stride);
+    decoder.decodeVertexBuffer(vertices, level.vertices, layout.stride, prefix);
+    const size = level.indexType === 5125 ? 4 : 2;
+    const raw = new Uint8Array(level.indexCount * size);
+    decoder.decodeIndexBuffer(raw, level.indexCount, size, packedIndices);
+    const indices = size === 4 ? new Uint32Array(raw.buffer) : new Uint16Array(raw.buffer);
+    await onLevel({ level, index: k, vertices, indices, layout });
     if (stopAfter !== undefined && k <= stopAfter) break;
   }
   return layout;

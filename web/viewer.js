@@ -5,6 +5,7 @@
 import * as THREE from "three";
 import { OrbitControls } from "three/addons/controls/OrbitControls.js";
 import { GLTFLoader } from "three/addons/loaders/GLTFLoader.js";
+import { MeshoptDecoder } from "three/addons/libs/meshopt_decoder.module.js";
 import { RangeSource, streamLevels } from "./lod_stream.js";
 
 const $ = (id) => document.getElementById(id);
@@ -145,13 +146,13 @@ async function open(source, baseUrl, title, stopAfter) {
     renderer.render(scene, camera);
     state.levels.push({ index, faces: level.faces, vertices: level.vertices, bytes: reader.received,
                         ms: performance.now() - t0 });
-  }, { stopAfter });
+  }, { stopAfter, decoder: MeshoptDecoder });
   state.done = true;
 }
 
 // Level K as three.js's GLTFLoader reads the whole file: the reference the tests compare with.
 async function reference(url, k) {
-  const gltf = await new GLTFLoader().loadAsync(url);
+  const gltf = await new GLTFLoader().setMeshoptDecoder(MeshoptDecoder).loadAsync(url);
   const json = gltf.parser.json;
   const top = json.scenes[json.scene ?? 0].nodes[0];
   const nodeIds = [top, ...(json.nodes[top].extensions?.MSFT_lod?.ids ?? [])];

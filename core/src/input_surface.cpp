@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
-#include <cstdlib>
 #include <limits>
 
 #include "local_error.h"
@@ -191,10 +190,9 @@ bool InputSurface::folds(const Patch& patch, const Evaluator& eval) const {
     const Vec3 a = patch.q[tri[0]], b = patch.q[tri[1]], c = patch.q[tri[2]];
     const Vec3 n = normalized(cross(b - a, c - a));
     const Vec3 m = (a + b + c) * (1.0 / 3);
-    static const bool one = std::getenv("VRS_ONESAMPLE") != nullptr;
-    const Vec3 xs[4] = {m, (m + a) * 0.5, (m + b) * 0.5, (m + c) * 0.5};
-    for (int i = 0; i < (one ? 1 : 4); ++i) {
-      const Vec3 x = xs[i];
+    // Four points, not the centroid alone: one missed folds the benchmark then measured (1 %
+    // p90 of the error ratio 2.40 against 2.04, 14 folded runs against 5; bench/ablation.md).
+    for (const Vec3 x : {m, (m + a) * 0.5, (m + b) * 0.5, (m + c) * 0.5}) {
       double d2;
       Vec3 nearest_normal;
       if (!nearest(x, eval, d2, nearest_normal) || dot(nearest_normal, n) > 0) continue;

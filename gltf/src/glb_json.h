@@ -27,10 +27,33 @@ class GlbJson {
     return int(views_.size() - 1);
   }
 
+  // A view decoded by EXT_meshopt_compression into the fallback buffer (buffer 1, no bytes) at
+  // `offset`, from `compressed_bytes` of the binary chunk at `compressed_offset`. `stride`:
+  // the record's size (an index's for TRIANGLES). A vertex stream's `tail` goes in the view's
+  // extras: with it the stream's first bytes decode alone (meshopt_streams.h).
+  int compressed_view(size_t offset, size_t bytes, size_t stride, int target,
+                      size_t compressed_offset, size_t compressed_bytes, const char* mode,
+                      size_t count, const std::vector<uint8_t>& tail) {
+    const bool vertices = target == 34962;
+    std::string v = "{\"buffer\":1,\"byteOffset\":" + num(offset) + ",\"byteLength\":" + num(bytes);
+    if (vertices) v += ",\"byteStride\":" + num(stride);
+    v += ",\"target\":" + num(size_t(target)) +
+         ",\"extensions\":{\"EXT_meshopt_compression\":{\"buffer\":0,\"byteOffset\":" +
+         num(compressed_offset) + ",\"byteLength\":" + num(compressed_bytes) +
+         ",\"byteStride\":" + num(stride) + ",\"mode\":\"" + mode + "\",\"count\":" + num(count) +
+         "}}";
+    if (!tail.empty()) v += ",\"extras\":{\"vrsimplify\":{\"tail\":\"" + base64(tail) + "\"}}";
+    views_.push_back(v + "}");
+    compressed_ = true;
+    return int(views_.size() - 1);
+  }
+  void fallback(size_t bytes) { fallback_bytes_ = bytes; }
+
   // One level: its accessors over the shared vertex view (count = its prefix), its indices,
   // its mesh and node.
+  // `stream_bytes` (compressed files): the bytes of the vertex stream that hold its prefix.
   void level(int vertex_view, size_t vertices, const float* bounds, int index_view,
-             size_t index_count, bool wide, double ratio, double error) {
+             size_t index_count, bool wide, double ratio, double error, size_t stream_bytes) {
     std::string attributes =
         "\"POSITION\":" + accessor(vertex_view, 0, 5126, vertices, "VEC3", false, bounds);
     if (normal_at_ >= 0)
@@ -48,6 +71,7 @@ class GlbJson {
     std::string extras = "{\"vrsimplify\":{\"ratio\":" + real(ratio) +
                          ",\"faces\":" + num(index_count / 3) + ",\"vertices\":" + num(vertices);
     if (error >= 0 && std::isfinite(error)) extras += ",\"error\":" + real(error);
+    if (stream_bytes) extras += ",\"streamBytes\":" + num(stream_bytes);
     extras += "}}";
     meshes_.push_back("{\"name\":\"level " + num(k) + "\",\"primitives\":[{\"attributes\":{" +
                       attributes + "},\"indices\":" + idx + ",\"material\":0,\"mode\":4}]," +
@@ -59,7 +83,11 @@ class GlbJson {
     const size_t n = meshes_.size();
     std::string s = "{\"asset\":{\"version\":\"2.0\",\"generator\":\"" +
                     vrs_common::json_text(a_.generator) + "\"}";
-    if (n > 1) s += ",\"extensionsUsed\":[\"MSFT_lod\"]";
+    std::string used;
+    if (n > 1) used += "\"MSFT_lod\"";
+    if (compressed_) used += std::string(used.empty() ? "" : ",") + "\"EXT_meshopt_compression\"";
+    if (!used.empty()) s += ",\"extensionsUsed\":[" + used + "]";
+    if (compressed_) s += ",\"extensionsRequired\":[\"EXT_meshopt_compression\"]";
     s += ",\"scene\":0,\"scenes\":[{\"nodes\":[0]}],\"nodes\":[";
     for (size_t k = 0; k < n; ++k) {
       if (k) s += ",";
@@ -88,7 +116,11 @@ class GlbJson {
            "\"source\":0}],\"images\":[{\"uri\":\"" +
            vrs_common::json_text(uri_escaped(a_.texture_uri)) + "\"}]";
     s += ",\"accessors\":[" + join(accessors_) + "],\"bufferViews\":[" + join(views_) +
-         "],\"buffers\":[{\"byteLength\":" + num(buffer_bytes_) + "}]}";
+         "],\"buffers\":[{\"byteLength\":" + num(buffer_bytes_) + "}";
+    if (compressed_)
+      s += ",{\"byteLength\":" + num(fallback_bytes_) +
+           ",\"extensions\":{\"EXT_meshopt_compression\":{\"fallback\":true}}}";
+    s += "]}";
     return s;
   }
 
@@ -106,6 +138,19 @@ class GlbJson {
     return num(accessors_.size() - 1);
   }
   static std::string num(size_t x) { return std::to_string(x); }
+  static std::string base64(const std::vector<uint8_t>& b) {
+    static const char* abc = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    std::string out;
+    for (size_t i = 0; i < b.size(); i += 3) {
+      const uint32_t x = uint32_t(b[i]) << 16 | (i + 1 < b.size() ? uint32_t(b[i + 1]) << 8 : 0) |
+                         (i + 2 < b.size() ? b[i + 2] : 0);
+      out += abc[x >> 18 & 63];
+      out += abc[x >> 12 & 63];
+      out += i + 1 < b.size() ? abc[x >> 6 & 63] : '=';
+      out += i + 2 < b.size() ? abc[x & 63] : '=';
+    }
+    return out;
+  }
   // Shortest text that reads back as the same float (glTF's min/max must match the data).
   static std::string real(double x) {
     char b[32];
@@ -139,7 +184,8 @@ class GlbJson {
   const GlbAttributes& a_;
   size_t stride_;
   int normal_at_, color_at_, uv_at_;
-  size_t buffer_bytes_ = 0;
+  size_t buffer_bytes_ = 0, fallback_bytes_ = 0;
+  bool compressed_ = false;
   std::vector<std::string> views_, accessors_, meshes_;
   std::vector<double> ratios_;
 };

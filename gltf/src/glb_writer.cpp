@@ -3,6 +3,7 @@
 #include "vrs/glb.h"
 
 #include <algorithm>
+#include <array>
 #include <cerrno>
 #include <cmath>
 #include <cstdint>
@@ -12,6 +13,7 @@
 #include <unistd.h>
 
 #include "glb_json.h"
+#include "meshopt_streams.h"
 
 namespace vrs {
 
@@ -100,13 +102,38 @@ class VertexTable {
   // shared order): without split vertices the glTF vertices are then exactly that order.
   // `indices` (the level just added) follow.
   void order_since(size_t from, const std::vector<uint32_t>& rank, std::vector<uint32_t>& indices) {
+    reorder_since(from, indices, [&](uint32_t a, uint32_t b) {
+      return rank[vertex_of_[a]] < rank[vertex_of_[b]];
+    });
+  }
+  // The same, in the order the level's indices first use them (what the codecs compress best).
+  void order_since_by_use(size_t from, std::vector<uint32_t>& indices) {
+    std::vector<uint32_t> first(next_.size() - from, kNoRecord);
+    for (size_t i = 0; i < indices.size(); ++i)
+      if (indices[i] >= from && first[indices[i] - from] == kNoRecord)
+        first[indices[i] - from] = uint32_t(i);
+    reorder_since(from, indices,
+                  [&](uint32_t a, uint32_t b) { return first[a - from] < first[b - from]; });
+  }
+  // Copies of the last record until the count is a multiple of `block` (unreferenced: a
+  // stream's padding). Not found by find_or_add.
+  void pad_to(size_t block) {
+    while (next_.size() % block != 0) {
+      const size_t last = next_.size() - 1;
+      bytes_.insert(bytes_.end(), bytes_.begin() + last * stride_,
+                    bytes_.begin() + (last + 1) * stride_);
+      next_.push_back(kNoRecord);
+      vertex_of_.push_back(vertex_of_[last]);
+    }
+  }
+
+ private:
+  template <class Less> void reorder_since(size_t from, std::vector<uint32_t>& indices, Less less) {
     const size_t count = next_.size() - from;
     std::vector<uint32_t> by_rank(count);
     for (size_t i = 0; i < count; ++i)
       by_rank[i] = uint32_t(from + i);
-    std::stable_sort(by_rank.begin(), by_rank.end(), [&](uint32_t a, uint32_t b) {
-      return rank[vertex_of_[a]] < rank[vertex_of_[b]];
-    });
+    std::stable_sort(by_rank.begin(), by_rank.end(), less);
     std::vector<uint32_t> new_id(count);
     for (size_t i = 0; i < count; ++i)
       new_id[by_rank[i] - from] = uint32_t(from + i);
@@ -128,7 +155,6 @@ class VertexTable {
       i = moved(i);
   }
 
- private:
   const float* pos_;
   const GlbAttributes& a_;
   size_t stride_;
@@ -187,6 +213,10 @@ std::string write_glb(const std::string& path, const float* positions, size_t ve
   std::vector<uint32_t> rank(vertex_count, kNoRecord);
   for (size_t i = 0; i < chain.vertices.size(); ++i)
     rank[chain.vertices[i]] = uint32_t(i);
+  if (a.compress && !meshopt_available())
+    return "this build cannot compress: it has no meshoptimizer encoder (scripts/setup.sh "
+           "fetches its sources)";
+  const size_t block = a.compress ? meshopt_block_vertices(table.stride()) : 1;
   for (size_t k = n; k-- > 0;) {
     const LodLevel& l = chain.levels[k];
     const size_t before = table.size();
@@ -195,7 +225,16 @@ std::string write_glb(const std::string& path, const float* positions, size_t ve
       if (!table.find_or_add(chain.vertices[l.triangles[c]],
                              corners ? l.corner_source[c] : kNoRecord, indices[k][c]))
         return "a face has a vertex with a non-finite coordinate, which glTF cannot hold";
-    table.order_since(before, rank, indices[k]);
+    if (a.compress) {
+      // The level's triangles in the vertex cache's order and its new vertices as they are
+      // first used: the order both codecs compress best (the shared order only asks that a
+      // level's vertices follow the coarser ones'). A prefix ends on a codec block.
+      order_triangles_for_cache(indices[k], table.size());
+      table.order_since_by_use(before, indices[k]);
+      if (k > 0) table.pad_to(block);
+    } else {
+      table.order_since(before, rank, indices[k]);
+    }
     prefix[k] = table.size();
     for (int c = 0; c < 3; ++c)
       bounds[k][c] = table.low()[c], bounds[k][3 + c] = table.high()[c];
@@ -211,12 +250,26 @@ std::string write_glb(const std::string& path, const float* positions, size_t ve
     ib[k] = index_bytes(indices[k], prefix[k], w);
     wide[k] = w;
   }
+  CompressedVertices cv;
+  std::vector<uint8_t> vb = table.bytes();   // what the chunk holds of the vertices
+  std::vector<size_t> packed_index_bytes(n); // a compressed stream's own length, unpadded
+  if (a.compress) {
+    std::vector<size_t> prefixes(prefix.begin(), prefix.end());
+    std::string err = compress_vertices(vb.data(), table.size(), table.stride(), prefixes, cv);
+    for (size_t k = 0; k < n && err.empty(); ++k) {
+      err = compress_indices(indices[k], prefix[k], ib[k]);
+      packed_index_bytes[k] = ib[k].size();
+      ib[k].resize(pad4(ib[k].size()), 0);
+    }
+    if (!err.empty()) return err;
+    vb = cv.stream;
+  }
   std::vector<size_t> index_at(n);
   size_t at = 0;
   index_at[n - 1] = at;
   at += ib[n - 1].size();
   const size_t vertex_at = at;
-  at += pad4(table.bytes().size());
+  at += pad4(vb.size());
   for (size_t k = n - 1; k-- > 0;) {
     index_at[k] = at;
     at += ib[k].size();
@@ -225,12 +278,31 @@ std::string write_glb(const std::string& path, const float* positions, size_t ve
 
   GlbJson j(a, table.stride(), table.normal_at(), table.color_at(), table.uv_at());
   j.buffer(bin_bytes);
-  const int vertex_view = j.view(vertex_at, table.bytes().size(), table.stride(), 34962);
+  int vertex_view;
+  std::vector<int> index_view(n);
+  if (a.compress) {
+    // Decoded, the views lie one after the other in the fallback buffer (which has no bytes).
+    size_t decoded = 0;
+    vertex_view = j.compressed_view(decoded, table.bytes().size(), table.stride(), 34962, vertex_at,
+                                    cv.stream.size(), "ATTRIBUTES", table.size(), cv.tail);
+    decoded += pad4(table.bytes().size());
+    for (size_t k = 0; k < n; ++k) {
+      const size_t size = wide[k] ? 4 : 2, bytes = indices[k].size() * size;
+      index_view[k] = j.compressed_view(decoded, bytes, size, 34963, index_at[k],
+                                        packed_index_bytes[k], "TRIANGLES", indices[k].size(), {});
+      decoded += pad4(bytes);
+    }
+    j.fallback(decoded);
+  } else {
+    vertex_view = j.view(vertex_at, table.bytes().size(), table.stride(), 34962);
+    for (size_t k = 0; k < n; ++k)
+      index_view[k] = j.view(index_at[k], indices[k].size() * (wide[k] ? 4 : 2), 0, 34963);
+  }
   for (size_t k = 0; k < n; ++k) {
     const LodLevel& l = chain.levels[k];
-    const int view = j.view(index_at[k], indices[k].size() * (wide[k] ? 4 : 2), 0, 34963);
-    j.level(vertex_view, prefix[k], bounds[k].data(), view, indices[k].size(), wide[k], l.ratio,
-            k < a.level_errors.size() ? a.level_errors[k] : -1.0);
+    j.level(vertex_view, prefix[k], bounds[k].data(), index_view[k], indices[k].size(), wide[k],
+            l.ratio, k < a.level_errors.size() ? a.level_errors[k] : -1.0,
+            a.compress ? cv.prefix_bytes[k] : 0);
   }
   const std::string json = j.finish();
 
@@ -257,8 +329,8 @@ std::string write_glb(const std::string& path, const float* positions, size_t ve
   static const uint8_t zeros[4] = {0, 0, 0, 0};
   bool ok = std::fwrite(head.data(), 1, head.size(), f) == head.size();
   ok = ok && std::fwrite(ib[n - 1].data(), 1, ib[n - 1].size(), f) == ib[n - 1].size();
-  ok = ok && std::fwrite(table.bytes().data(), 1, table.bytes().size(), f) == table.bytes().size();
-  const size_t pad = pad4(table.bytes().size()) - table.bytes().size();
+  ok = ok && std::fwrite(vb.data(), 1, vb.size(), f) == vb.size();
+  const size_t pad = pad4(vb.size()) - vb.size();
   ok = ok && std::fwrite(zeros, 1, pad, f) == pad;
   for (size_t k = n - 1; k-- > 0;)
     ok = ok && std::fwrite(ib[k].data(), 1, ib[k].size(), f) == ib[k].size();
@@ -272,6 +344,7 @@ std::string write_glb(const std::string& path, const float* positions, size_t ve
   if (layout) {
     const size_t bin_start = 12 + 8 + json_bytes + 8;
     layout->file_bytes = total;
+    layout->compressed = a.compress;
     layout->vertex_count = table.size();
     layout->vertex_stride = table.stride();
     layout->vertex_offset = bin_start + vertex_at;
@@ -282,9 +355,9 @@ std::string write_glb(const std::string& path, const float* positions, size_t ve
       L.faces = indices[k].size() / 3;
       L.index_offset = bin_start + index_at[k];
       L.index_bytes = ib[k].size();
-      L.vertex_bytes = prefix[k] * table.stride();
+      L.vertex_bytes = a.compress ? cv.prefix_bytes[k] : prefix[k] * table.stride();
       // The header and JSON, its vertex prefix and its indices (for the coarsest level, one
-      // prefix of the file).
+      // prefix of the file; compressed, the stream's tail is in the JSON).
       L.bytes_to_draw = bin_start + L.vertex_bytes + L.index_bytes;
     }
   }

@@ -74,8 +74,8 @@ nb::dict write_glb(const std::string& path, AnyArray vertices, AnyArray order,
                    std::optional<AnyArray> normals, std::optional<AnyArray> colors,
                    std::optional<AnyArray> uvs, std::optional<AnyArray> corner_normals,
                    std::optional<AnyArray> corner_colors, std::optional<AnyArray> corner_uvs,
-                   const std::string& texture, std::vector<double> level_errors,
-                   size_t input_faces) {
+                   const std::string& texture, std::vector<double> level_errors, size_t input_faces,
+                   bool compress) {
   const std::vector<float> positions = vrs_py::read_positions(vertices);
   const size_t n = positions.size() / 3;
   vrs::LodChain chain;
@@ -104,6 +104,7 @@ nb::dict write_glb(const std::string& path, AnyArray vertices, AnyArray order,
   a.corner_normals = ptr(cn), a.corner_colors = ptr(cc), a.corner_uvs = ptr(ct);
   a.texture_uri = texture;
   a.level_errors = level_errors;
+  a.compress = compress;
   a.generator = std::string("vrsimplify ") + VRS_VERSION;
   vrs::GlbLayout layout;
   const std::string err = vrs::write_glb(path, positions.data(), n, chain, a, &layout);
@@ -112,6 +113,7 @@ nb::dict write_glb(const std::string& path, AnyArray vertices, AnyArray order,
   d["file_bytes"] = layout.file_bytes;
   d["gltf_vertices"] = layout.vertex_count;
   d["vertex_stride"] = layout.vertex_stride;
+  d["compressed"] = layout.compressed;
   nb::list levels;
   for (const auto& L : layout.levels) {
     nb::dict x;
@@ -138,5 +140,5 @@ void register_lods(nb::module_& m) {
         nb::arg("corner_sources"), nb::arg("normals").none(), nb::arg("colors").none(),
         nb::arg("uvs").none(), nb::arg("corner_normals").none(), nb::arg("corner_colors").none(),
         nb::arg("corner_uvs").none(), nb::arg("texture"), nb::arg("level_errors"),
-        nb::arg("input_faces"));
+        nb::arg("input_faces"), nb::arg("compress"));
 }

@@ -88,6 +88,29 @@ def test_glb_reads_back_level_by_level(sphere, tmp_path):
         assert (color[:, :3] == 200).all() and (color[:, 3] == 255).all()
 
 
+def test_compressed_glb_is_smaller_and_says_it_needs_the_extension(sphere, tmp_path):
+    v, f = sphere
+    v32 = v.astype(np.float32)
+    chain = vrsimplify.lods(v32, f, [1, 0.25, 0.02])
+    plain = vrsimplify.write_glb(tmp_path / "p.glb", v32, chain)
+    packed = vrsimplify.write_glb(tmp_path / "c.glb", v32, chain, compress=True)
+    assert packed["compressed"] and not plain["compressed"]
+    assert packed["file_bytes"] < 0.8 * plain["file_bytes"]
+    doc, data, _ = read_glb(tmp_path / "c.glb")
+    assert doc["extensionsRequired"] == ["EXT_meshopt_compression"]
+    assert doc["buffers"][1]["extensions"]["EXT_meshopt_compression"]["fallback"] is True
+    views = [bv["extensions"]["EXT_meshopt_compression"] for bv in doc["bufferViews"]]
+    assert {x["mode"] for x in views} == {"ATTRIBUTES", "TRIANGLES"}
+    # Every coarser level names its bytes of the vertex stream; the viewer decodes those alone.
+    assert all(doc["meshes"][k]["extras"]["vrsimplify"]["streamBytes"] > 0 for k in range(3))
+    assert layout_levels_grow(packed)
+
+
+def layout_levels_grow(layout):
+    draws = [lv["bytes_to_draw"] for lv in layout["levels"]]
+    return all(a > b for a, b in zip(draws, draws[1:]))
+
+
 def test_corner_uvs_split_only_at_seams(tmp_path):
     # A strip of two texture charts: the seam's vertices are written twice, nothing else.
     n = 12

@@ -103,7 +103,8 @@ def _rows(a, what):
 
 def write_glb(path, mesh_vertices, chain: Lods, /, *, normals=None, colors=None, uvs=None,
               corner_normals=None, corner_colors=None, corner_uvs=None,
-              texture: Optional[str] = None, level_errors: Optional[Sequence[float]] = None) -> dict:
+              texture: Optional[str] = None, level_errors: Optional[Sequence[float]] = None,
+              compress: bool = False) -> dict:
     """Writes every level of ``chain`` (of ``mesh_vertices``) as one binary glTF 2.0 file.
 
     One vertex buffer shared by all levels, coarsest level first; one index buffer per level;
@@ -112,9 +113,11 @@ def write_glb(path, mesh_vertices, chain: Lods, /, *, normals=None, colors=None,
     corner, indexed like the input's faces (faces, 3, ...) or (3 * faces, ...):
     ``corner_normals``, ``corner_colors``, ``corner_uvs`` (they take precedence); a vertex whose corners differ becomes one glTF vertex per distinct corner. ``texture``: the
     base color image, as a path relative to the file. ``level_errors``: one number per level
-    (finest first), recorded in its mesh's extras and shown by the viewer page. Returns the layout: ``file_bytes`` and
-    per level ``faces``, ``vertices``, ``bytes_to_draw`` (what a reader with range requests
-    fetches to draw it). Written whole or not at all.
+    (finest first), recorded in its mesh's extras and shown by the viewer page. ``compress``:
+    EXT_meshopt_compression (meshoptimizer's codec, lossless: positions stay the input's
+    floats; the levels still stream coarsest first). Returns the layout: ``file_bytes``,
+    ``compressed`` and per level ``faces``, ``vertices``, ``bytes_to_draw`` (what a reader
+    with range requests fetches to draw it). Written whole or not at all.
     """
     from . import _array
 
@@ -146,5 +149,5 @@ def write_glb(path, mesh_vertices, chain: Lods, /, *, normals=None, colors=None,
         per_vertex(normals, "normals", 3), per_vertex(colors, "colors", 4), per_vertex(uvs, "uvs", 2),
         per_corner(corner_normals, "corner_normals", 3), per_corner(corner_colors, "corner_colors", 4),
         per_corner(corner_uvs, "corner_uvs", 2), texture or "",
-        [float(e) for e in level_errors] if level_errors is not None else [], k)
+        [float(e) for e in level_errors] if level_errors is not None else [], k, bool(compress))
     return layout

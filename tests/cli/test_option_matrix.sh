@@ -24,7 +24,7 @@ declare -A args=(
   [--queue]="--queue heap" [--ratio]="--ratio 0.2" [--reprice]="--reprice eager"
   [--simplify-boundary]="--simplify-boundary" [--threads]="--threads 1" [--version]="--version"
   [--vertices]="--vertices 3000" [--memory]="" [--scheduler]="" [--work-dir]="" [--workers]="--workers 1"
-  [--lods]=""
+  [--lods]="" [--compress]=""
 )
 # Options that are about the run, not the mesh: the same output with or without them.
 same_output=" --json --progress --threads --workers --error-bound --ascii "
@@ -37,7 +37,7 @@ for opt in "${!args[@]}"; do
   a=${args[$opt]}
   # The tiled switch itself, no run, or a .glb output (tests/web/test_glb.sh: --lods with any
   # other output and with --memory is refused there).
-  case $opt in --memory|--scheduler|--work-dir|--version|--lods) continue ;; esac
+  case $opt in --memory|--scheduler|--work-dir|--version|--lods|--compress) continue ;; esac
   target="--ratio 0.1"
   case $opt in --ratio|--faces|--vertices|--auto|--max-factor|--max-error) target="" ;; esac
   name=${opt#--}

@@ -4,6 +4,8 @@
 // validator and three.js check the same files from tests/web/.
 #include <gtest/gtest.h>
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 #include <fstream>
 #include <iterator>
@@ -162,3 +164,125 @@ TEST(Glb, RefusesWhatGltfCannotHoldAndLeavesNoFile) {
   EXPECT_NE(write_glb("/nonexistent-dir/x.glb", in.positions.data(), in.vertex_count(), chain, {}),
             "");
 }
+
+#ifdef VRS_HAVE_MESHOPTIMIZER
+#include <meshoptimizer.h>
+
+#include "meshopt_streams.h"
+
+// Compressed (EXT_meshopt_compression), decoded with meshoptimizer's own decoder: each level's
+// triangles are the plain file's, vertex records bit for bit (lossless); each coarser level's
+// vertices end on a block of the vertex codec, so its first bytes of the stream and the tail
+// decode alone; and the block size the writer assumes is the encoder's (a prefix one vertex
+// past a block is not a prefix of the stream's bytes).
+TEST(Glb, CompressedLevelsAreThePlainOnesAndEachStreamsAlone) {
+  const Mesh in = vrs_test::icosphere(4);
+  Options o;
+  o.threads = 1;
+  const LodChain chain = simplify_lods(in, {1.0, 0.5, 0.1, 0.01}, o);
+  ASSERT_TRUE(chain.ok);
+  std::vector<float> normals(in.positions);
+  GlbAttributes a;
+  a.normals = normals.data();
+  GlbLayout plain, packed;
+  ASSERT_EQ(
+      write_glb(temp_path("plain.glb"), in.positions.data(), in.vertex_count(), chain, a, &plain),
+      "");
+  a.compress = true;
+  const std::string path = temp_path("packed.glb");
+  ASSERT_EQ(write_glb(path, in.positions.data(), in.vertex_count(), chain, a, &packed), "");
+  EXPECT_TRUE(packed.compressed);
+  EXPECT_LT(packed.file_bytes, plain.file_bytes * 3 / 4);
+  const std::vector<uint8_t> b = read_all(path);
+  const uint32_t json_bytes = u32(b, 12);
+  const std::string json(b.begin() + 20, b.begin() + 20 + json_bytes);
+  EXPECT_NE(json.find("\"extensionsRequired\":[\"EXT_meshopt_compression\"]"), std::string::npos);
+  EXPECT_NE(json.find("\"fallback\":true"), std::string::npos);
+  const size_t bin = 20 + json_bytes + 8, stride = packed.vertex_stride;
+  const size_t block = meshopt_block_vertices(stride);
+
+  // The whole vertex stream, as the file holds it (between the coarsest indices and the rest).
+  const auto& coarse = packed.levels.back();
+  const size_t stream_at = packed.vertex_offset;
+  const size_t stream_end = packed.levels[packed.levels.size() - 2].index_offset;
+  std::vector<uint8_t> records(packed.vertex_count * stride);
+  size_t stream_bytes = stream_end - stream_at;
+  while (stream_bytes > 0 && meshopt_decodeVertexBuffer(records.data(), packed.vertex_count, stride,
+                                                        b.data() + stream_at, stream_bytes) != 0)
+    --stream_bytes; // the chunk pads the stream to 4 bytes
+  ASSERT_GT(stream_bytes, 0u);
+  EXPECT_EQ(coarse.index_offset, bin);
+  const size_t tail = std::max<size_t>(stride, 32);
+  for (size_t k = 0; k < packed.levels.size(); ++k) {
+    const auto& L = packed.levels[k];
+    if (k > 0) {
+      EXPECT_EQ(L.vertex_count % block, 0u) << "level " << k;
+    }
+    // Its prefix with the tail decodes alone, to the stream's first records.
+    std::vector<uint8_t> prefix(b.begin() + stream_at, b.begin() + stream_at + L.vertex_bytes);
+    prefix.insert(prefix.end(), b.begin() + stream_at + stream_bytes - tail,
+                  b.begin() + stream_at + stream_bytes);
+    std::vector<uint8_t> alone(L.vertex_count * stride);
+    ASSERT_EQ(meshopt_decodeVertexBuffer(alone.data(), L.vertex_count, stride, prefix.data(),
+                                         prefix.size()),
+              0)
+        << "level " << k;
+    EXPECT_EQ(std::memcmp(alone.data(), records.data(), alone.size()), 0) << "level " << k;
+    // Its triangles: the plain level's, each corner the same position and normal.
+    const size_t size = L.vertex_count >= 65535 ? 4 : 2;
+    std::vector<uint32_t> idx(L.faces * 3);
+    std::vector<uint8_t> raw(idx.size() * size);
+    size_t packed_bytes = L.index_bytes;
+    while (packed_bytes > 0 &&
+           meshopt_decodeIndexBuffer(raw.data(), idx.size(), size, b.data() + L.index_offset,
+                                     packed_bytes) != 0)
+      --packed_bytes;
+    ASSERT_GT(packed_bytes, 0u) << "level " << k;
+    for (size_t i = 0; i < idx.size(); ++i) {
+      if (size == 2) {
+        uint16_t s;
+        std::memcpy(&s, raw.data() + 2 * i, 2);
+        idx[i] = s;
+      } else {
+        std::memcpy(&idx[i], raw.data() + 4 * i, 4);
+      }
+    }
+    auto key = [&](const uint8_t* base, uint32_t v) {
+      return std::string(reinterpret_cast<const char*>(base) + v * stride, stride);
+    };
+    std::multiset<std::string> got, want;
+    for (size_t t = 0; t < idx.size(); t += 3) {
+      std::string c[3] = {key(records.data(), idx[t]), key(records.data(), idx[t + 1]),
+                          key(records.data(), idx[t + 2])};
+      const int m = c[0] <= c[1] && c[0] <= c[2] ? 0 : c[1] <= c[2] ? 1 : 2; // start: least
+      got.insert(c[m] + c[(m + 1) % 3] + c[(m + 2) % 3]);
+    }
+    const LodLevel& l = chain.levels[k];
+    for (size_t t = 0; t < l.triangles.size(); t += 3) {
+      std::string c[3];
+      for (int j = 0; j < 3; ++j) {
+        const uint32_t v = chain.vertices[l.triangles[t + j]];
+        float rec[6] = {in.positions[3 * v], in.positions[3 * v + 1], in.positions[3 * v + 2]};
+        const double len =
+            std::sqrt(double(rec[0]) * rec[0] + double(rec[1]) * rec[1] + double(rec[2]) * rec[2]);
+        for (int c3 = 0; c3 < 3; ++c3)
+          rec[3 + c3] = float(normals[3 * v + c3] / len);
+        c[j] = std::string(reinterpret_cast<const char*>(rec), 24);
+      }
+      const int m = c[0] <= c[1] && c[0] <= c[2] ? 0 : c[1] <= c[2] ? 1 : 2;
+      want.insert(c[m] + c[(m + 1) % 3] + c[(m + 2) % 3]);
+    }
+    EXPECT_TRUE(got == want) << "level " << k;
+  }
+  // The block the writer assumes is the encoder's: a prefix one record past a block is not.
+  std::vector<uint8_t> full(meshopt_encodeVertexBufferBound(block + 1, stride));
+  full.resize(
+      meshopt_encodeVertexBuffer(full.data(), full.size(), records.data(), block + 1, stride));
+  std::vector<uint8_t> first(meshopt_encodeVertexBufferBound(block, stride));
+  first.resize(
+      meshopt_encodeVertexBuffer(first.data(), first.size(), records.data(), block, stride));
+  EXPECT_EQ(std::memcmp(first.data(), full.data(), first.size() - tail), 0);
+  CompressedVertices cv;
+  EXPECT_NE(compress_vertices(records.data(), block + 1, stride, {block - 1}, cv), "");
+}
+#endif

@@ -4,7 +4,10 @@
 # the build (cpack) and installed into the root with `apt-get install ./file.deb`, the filter is
 # found in Filters > Remeshing, Simplification and Reconstruction, applied from its dialog, then
 # applied with a bad parameter: MeshLab's failure dialog must show our message and the layer
-# stay as it was. Then `apt-get remove` takes the plugin away and MeshLab still opens the mesh.
+# stay as it was. Then a polygon mesh (quads, pentagons, hexagons) is simplified and exported
+# with MeshLab's default options (polygons kept: what threw std::bad_alloc once): the file is
+# written, its polygons split into the triangles the log reports. Then `apt-get remove` takes
+# the plugin away and MeshLab still opens the mesh.
 # Screenshots go with the output.
 #   test_gui_newer.sh 2022.02|2025.07 ROOT BUILD_DIR MESH OUT_DIR
 # The clicks are at fixed places (a 1600x1000 screen, a fresh HOME, MeshLab's default layout);
@@ -51,6 +54,27 @@ inner() {
   return 0
 }
 
+polygons() { # the filter on a polygon OFF, then File > Export Mesh (ctrl+e) with the defaults
+  HOME=/tmp/vrs-home "$here/../../scripts/lib/in_root.sh" "$root" meshlab /tmp/vrs-gui/sheet.off \
+    >"$out/meshlab-polygons.log" 2>&1 &
+  local pid=$! i
+  for i in $(seq 60); do
+    grep -q "All files opened" "$out/meshlab-polygons.log" 2>/dev/null && xdotool search --name MeshLab >/dev/null && break
+    sleep 0.5
+  done
+  sleep 2
+  xdotool mousemove 116 9 click 1; sleep 1
+  xdotool mousemove 260 148; sleep 0.5; xdotool mousemove 300 148; sleep 1
+  xdotool mousemove 600 148; sleep 0.3; xdotool mousemove $entry; sleep 0.5
+  xdotool click 1; sleep 2
+  xdotool mousemove $apply click 1; sleep 3                                # Apply: half the faces
+  xdotool key ctrl+e; sleep 2                                              # Export Mesh
+  import -window root "$out/6-export-options.png"
+  xdotool key Return; sleep 2                                              # its options: OK
+  pkill -f "meshlab /tmp/vrs-gui/" 2>/dev/null; wait "$pid" 2>/dev/null
+  return 0
+}
+
 after() { # MeshLab alone, once the package is removed: it starts and opens the mesh
   HOME=/tmp/vrs-home "$here/../../scripts/lib/in_root.sh" "$root" meshlab "/tmp/vrs-gui/$(basename "$mesh")" \
     >"$out/meshlab-after.log" 2>&1 &
@@ -65,6 +89,7 @@ after() { # MeshLab alone, once the package is removed: it starts and opens the 
 
 if [ "${VRS_GUI_INNER:-}" = 1 ]; then inner; exit 0; fi
 if [ "${VRS_GUI_AFTER:-}" = 1 ]; then after; exit 0; fi
+if [ "${VRS_GUI_POLYGONS:-}" = 1 ]; then polygons; exit 0; fi
 rm -rf "$out" && mkdir -p "$out"
 
 # Install as a user would, into the root standing in for that Debian system; removed again at
@@ -102,6 +127,18 @@ check '[ "$(grep -Ec "Applied filter:? " "$log")" -eq 2 ]' "not exactly two succ
 for s in 1-remeshing-menu 2-dialog 3-applied 4-failure-dialog 5-after-failure; do
   check '[ -s "$out/$s.png" ]' "no screenshot $s.png"
 done
+
+# Polygons: exported after the filter with the default options (polygonal).
+python3 "$here/../support/polygon_sheet.py" "$root/tmp/vrs-gui/sheet.off"
+VRS_GUI_POLYGONS=1 timeout 180 "$here/../../scripts/lib/on_display.sh" -s '-screen 0 1600x1000x24' bash "$0" "$@"
+plog="$out/meshlab-polygons.log"
+cp "$root/tmp/vrs-gui/sheet.off" "$out/sheet-exported.off"
+kept=$(grep -Eo "Vertex Removal Decimation: 3200 -> [0-9]+ faces" "$plog" | head -1 | grep -Eo "[0-9]+ faces" | grep -Eo "[0-9]+")
+check '[ -n "$kept" ] && [ "$kept" -le 1600 ]' "the polygon sheet was not simplified (see $plog)"
+check 'grep -q "Saved Mesh /tmp/vrs-gui/sheet.off" "$plog"' "the export after the filter did not save (see $plog)"
+split=$(awk 'NF && $1 !~ /^#/ { k++; if (k == 2) nf = $2; else if (k > 2 && NF > 3 && $1 == NF - 1 && n < nf) { t += $1 - 2; p += ($1 > 3); n++ } } END { print t + 0, p + 0 }' "$out/sheet-exported.off")
+check '[ "${split% *}" = "$kept" ] && [ "${split#* }" -gt 0 ]' \
+  "the exported polygons (triangles, polygons: $split) are not the $kept faces the filter left"
 
 # Removed, MeshLab still starts and opens the mesh (and no longer lists the filter's plugin).
 remove

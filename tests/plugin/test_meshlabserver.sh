@@ -108,6 +108,72 @@ else
   fail "colors: meshlabserver failed: $(tail -3 "$out/colors.log")"
 fi
 
+# Untouched means untouched: a binary PLY whose float coordinates use every bit of their
+# mantissa, through the filter and meshlabserver's binary PLY writer: every output vertex is an
+# input vertex's 12 bytes.
+python3 - "$fandisk" "$out/bits-in.ply" <<'PY'
+import random, struct, sys
+words = [l.split() for l in open(sys.argv[1]) if l.strip() and not l.startswith("#")]
+nv, nf = int(words[1][0]), int(words[1][1])
+rng = random.Random(7)
+v = [[float(x) * (1 + rng.uniform(-1e-6, 1e-6)) + 0.1234567 for x in w[:3]] for w in words[2:2 + nv]]
+f = [list(map(int, w[1:4])) for w in words[2 + nv:2 + nv + nf]]
+with open(sys.argv[2], "wb") as out:
+    out.write(b"ply\nformat binary_little_endian 1.0\nelement vertex %d\nproperty float x\n"
+              b"property float y\nproperty float z\nelement face %d\n"
+              b"property list uchar int vertex_indices\nend_header\n" % (nv, nf))
+    out.write(b"".join(struct.pack("<3f", *p) for p in v))
+    out.write(b"".join(struct.pack("<B3i", 3, *t) for t in f))
+PY
+script mlx_vertex_removal TargetPerc=0.1
+if server "$out/bits.log" -i "$out/bits-in.ply" -o "$out/bits-out.ply" -s "$out/s.mlx" && [ -s "$out/bits-out.ply" ]; then
+  python3 - "$out/bits-in.ply" "$out/bits-out.ply" <<'PY' && ok || fail "untouched: $(cat "$out/bits.txt")"
+import sys
+def vertices(path):  # the 12 bytes of each vertex of a binary PLY of float x y z (+ other props)
+    b = open(path, "rb").read()
+    head, body = b.split(b"end_header\n", 1)
+    lines = head.decode().splitlines()
+    n = int(next(l.split()[2] for l in lines if l.startswith("element vertex")))
+    props, inside = [], False
+    for l in lines:
+        if l.startswith("element"):
+            inside = l.startswith("element vertex")
+        elif l.startswith("property") and inside:
+            props.append(l.split()[1])
+    assert "binary_little_endian" in head.decode() and props[:3] == ["float"] * 3, (props, head[:80])
+    size = sum({"float": 4, "uchar": 1, "int": 4, "double": 8}[p] for p in props)
+    return [body[i * size:i * size + 12] for i in range(n)]
+a, b = vertices(sys.argv[1]), vertices(sys.argv[2])
+missing = len(set(b) - set(a))
+open(sys.argv[2].replace("-out.ply", ".txt"), "w").write(f"{len(b)} vertices out, {missing} not an input vertex's bytes")
+sys.exit(0 if 600 < len(b) < 700 and missing == 0 else 1)
+PY
+else
+  fail "untouched: meshlabserver failed: $(tail -3 "$out/bits.log")"
+fi
+
+# Polygon meshes (quads, pentagons, hexagons) after the filter, saved as OBJ, PLY and OFF by
+# meshlabserver at 50, 10 and 1 %: every save is written and reads back with the faces the log
+# reports. (An OFF: MeshLab 2020.09's own OBJ importer asserts on polygons before any filter.)
+python3 "$(dirname "$0")/../support/polygon_sheet.py" "$out/sheet.off"
+for perc in 0.5 0.1 0.01; do
+  script mlx_vertex_removal TargetPerc=$perc
+  for ext in obj ply off; do
+    rm -f "$out/sheet-$perc.$ext"
+    if server "$out/sheet.log" -i "$out/sheet.off" -o "$out/sheet-$perc.$ext" -s "$out/s.mlx" && [ -s "$out/sheet-$perc.$ext" ]; then
+      want=$(grep -Eo "Vertex Removal Decimation: [0-9]+ -> [0-9]+ faces" "$out/sheet.log" | tail -1 | grep -Eo "[0-9]+ faces" | grep -Eo "[0-9]+")
+      case $ext in
+        obj) got=$(grep -c "^f " "$out/sheet-$perc.$ext") ;;
+        ply) got=$(awk '$1 == "element" && $2 == "face" { print $3; exit }' "$out/sheet-$perc.$ext") ;;
+        off) got=$(awk 'NF && $1 !~ /^#/ { k++; if (k == 2) { print $2; exit } }' "$out/sheet-$perc.$ext") ;;
+      esac
+      [ -n "$want" ] && [ "$got" = "$want" ] && ok || fail "polygons at $perc as .$ext: $got faces written, the log says ${want:-nothing}"
+    else
+      fail "polygons at $perc as .$ext: meshlabserver wrote nothing: $(tail -3 "$out/sheet.log")"
+    fi
+  done
+done
+
 # Ours and Quadric Edge Collapse Decimation in one script on two copies, same target.
 { mlx_begin; mlx_select_layer 0; mlx_vertex_removal TargetFaceNum=2000
   mlx_select_layer 1; mlx_qecd TargetFaceNum=2000; mlx_end; } >"$out/s.mlx"

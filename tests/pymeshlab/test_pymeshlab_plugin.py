@@ -105,6 +105,34 @@ def test_lod_levels_are_new_layers_and_the_input_stays(plugin, meshes):
     assert r["output_faces"] == faces[3]
 
 
+def test_double_coordinates_stay_bit_for_bit(plugin, tmp_path):
+    """Untouched means untouched in pymeshlab too (double scalars): a georeferenced terrain read
+    from a double PLY, whose coordinates no float holds, comes out of the filter with every
+    vertex an input vertex, bit for bit."""
+    n = 40
+    x, y = (a.ravel() for a in np.meshgrid(np.arange(n), np.arange(n)))
+    v = np.stack([500000.123456789 + 0.731 * x, 4100000.987654321 + 0.689 * y,
+                  100.0 + 3.21987654321 * np.sin(0.3 * x) * np.cos(0.2 * y)], axis=1)
+    q = np.array([i for i in range(n * (n - 1)) if i % n < n - 1])
+    faces = np.concatenate([np.stack([q, q + 1, q + n + 1], 1), np.stack([q, q + n + 1, q + n], 1)])
+    path = tmp_path / "terrain.ply"
+    with open(path, "wb") as f:
+        f.write(b"ply\nformat binary_little_endian 1.0\nelement vertex %d\nproperty double x\n"
+                b"property double y\nproperty double z\nelement face %d\n"
+                b"property list uchar int vertex_indices\nend_header\n" % (len(v), len(faces)))
+        f.write(v.astype("<f8").tobytes())
+        rec = np.zeros(len(faces), dtype=[("n", "u1"), ("i", "<i4", 3)])
+        rec["n"], rec["i"] = 3, faces
+        f.write(rec.tobytes())
+    ms = load(path)
+    assert np.array_equal(ms.current_mesh().vertex_matrix(), v), "pymeshlab reads the doubles"
+    r = ms.apply_filter(FILTER, targetperc=0.1)
+    out = ms.current_mesh().vertex_matrix()
+    assert r["target_reached"] and ms.current_mesh().face_number() <= round(0.1 * len(faces))
+    assert mp.is_vertex_subset(out, v)
+    assert (out.astype(np.float32).astype(np.float64) != out).any(axis=1).all(), "no float holds them"
+
+
 def test_selection_only_keeps_every_unselected_face(plugin, meshes):
     ms = load(meshes / "fandisk.off")
     ms.apply_filter("compute_selection_by_condition_per_face", condselect="(x0 > 0) && (x1 > 0) && (x2 > 0)")

@@ -42,6 +42,25 @@ validate "$out/tex/sub/bunny.glb"
 grep -q '"uri":"../bunny.png"' "$out/tex/sub/bunny.glb" || fail "the texture's URI relative to the .glb"
 grep -q "4 levels" "$out/bunny.txt" || fail "a halving chain of 4: $(cat "$out/bunny.txt")"
 
+# Compressed (EXT_meshopt_compression): the same levels, the same vertices bit for bit once
+# decoded (tests/web/glb_decoded.mjs, with meshoptimizer's own decoder from three.js), each
+# coarser level decodable from the first bytes of the vertex stream, and smaller.
+"$bin" "$data/elephant.off" "$out/elephant-c.glb" --lods 1,0.5,0.1,0.01 --compress --json >"$out/elephant-c.json" ||
+  fail "elephant --lods --compress"
+validate "$out/elephant-c.glb"
+grep -q '"extensionsRequired":\["EXT_meshopt_compression"\]' "$out/elephant-c.glb" || fail "compressed: the extension required"
+node "$here/glb_decoded.mjs" "$out/elephant.glb" "$out/elephant-c.glb" || fail "compressed elephant decodes to the uncompressed levels"
+"$bin" "$out/tex/bunny.obj" "$out/tex/sub/bunny-c.glb" --lods 4 --compress >/dev/null || fail "textured --lods 4 --compress"
+validate "$out/tex/sub/bunny-c.glb"
+node "$here/glb_decoded.mjs" "$out/tex/sub/bunny.glb" "$out/tex/sub/bunny-c.glb" || fail "compressed bunny decodes to the uncompressed levels"
+[ "$(stat -c %s "$out/elephant-c.glb")" -lt "$(( $(stat -c %s "$out/elephant.glb") * 3 / 4 ))" ] ||
+  fail "compression saves a quarter at least"
+refuse_compress_other() {
+  "$bin" "$data/elephant.off" "$out/x.ply" --compress >/dev/null 2>"$out/refusal.err"
+  [ $? -eq 2 ] && grep -q -- --compress "$out/refusal.err" && [ ! -e "$out/x.ply" ] || fail "--compress with a .ply output"
+}
+refuse_compress_other
+
 # A colored PLY, one level (a plain .glb output).
 bash "$top/tests/support/colored_ply.sh" "$data/fandisk.off" "$out/fandisk.ply"
 "$bin" "$out/fandisk.ply" "$out/fandisk.glb" --ratio 0.2 >/dev/null || fail "colored .glb"
@@ -79,6 +98,10 @@ node "$here/browser_test.mjs" "$top/python/vrsimplify/serve.py" "$out/tex/sub/bu
   "$out/browser-bunny" --throttle 1000000 --max-first 0.2 || fail "browser: textured bunny"
 node "$here/browser_test.mjs" "$top/python/vrsimplify/serve.py" "$out/elephant.glb" \
   "$out/browser-elephant" --throttle 300000 --max-first 0.1 || fail "browser: elephant"
+node "$here/browser_test.mjs" "$top/python/vrsimplify/serve.py" "$out/tex/sub/bunny-c.glb" \
+  "$out/browser-bunny-c" --throttle 300000 --max-first 0.3 || fail "browser: compressed textured bunny"
+node "$here/browser_test.mjs" "$top/python/vrsimplify/serve.py" "$out/elephant-c.glb" \
+  "$out/browser-elephant-c" --throttle 100000 --max-first 0.15 || fail "browser: compressed elephant"
 
 echo "$failed failed"
 [ "$failed" -eq 0 ]

@@ -37,6 +37,11 @@ struct GlbAttributes {
   // e.g. a certified bound in mesh units; empty or negative: none.
   std::vector<double> level_errors;
   std::string generator = "vrsimplify";
+  // EXT_meshopt_compression (meshoptimizer's codec, lossless: positions stay the input's
+  // floats), required by the file then; three.js, Babylon.js and gltfpack read it. Streaming
+  // survives: each level's vertices end on a block of the vertex codec (a few copies of its
+  // last vertex pad it), so the stream's first bytes decode the coarser levels alone.
+  bool compress = false;
 };
 
 // What was written, for the caller's report and for tests.
@@ -44,10 +49,11 @@ struct GlbLayout {
   size_t file_bytes = 0;
   size_t vertex_count = 0; // glTF vertices (input vertices, split at seams)
   size_t vertex_stride = 0;
+  bool compressed = false;
   struct Level {
     size_t vertex_count = 0, faces = 0;
     size_t index_offset = 0, index_bytes = 0; // in the file
-    size_t vertex_bytes = 0;                  // its prefix of the vertex buffer
+    size_t vertex_bytes = 0;  // its prefix of the vertex buffer (compressed: of the stream)
     size_t bytes_to_draw = 0; // JSON + coarser indices... : the file bytes it needs (see above)
   };
   size_t vertex_offset = 0;  // in the file
