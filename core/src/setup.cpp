@@ -216,7 +216,9 @@ void Simplifier::prepare() {
   // the first prices' scratch is gone (so that the copy does not raise the peak).
   std::vector<Priced>().swap(first);
   std::vector<uint8_t>().swap(kinds);
-  if (opt_.against_input && opt_.relax_to_reach_target) input_.keep(t);
+  // Not when the target is asked at any cost (max_price_jump 0): the eased passes then fold
+  // where nothing else reaches it, as before.
+  if (opt_.against_input && opt_.relax_to_reach_target && opt_.max_price_jump > 0) input_.keep(t);
 }
 
 } // namespace vrs

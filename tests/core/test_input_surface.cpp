@@ -86,6 +86,24 @@ TEST(InputSurface, PlateWithSlotsStopsCleanInsteadOfCrumpling) {
   EXPECT_EQ(vrs_test::check_run(in, out, o, r), "");
 }
 
+// Asked at any cost (max_price_jump 0), the same plate goes further, as it did: the eased
+// passes answer to the input's nearest faces only when a faithful stop is wanted.
+TEST(InputSurface, AtAnyCostThePlateGoesFurther) {
+  const vrs::Mesh in = vrs_test::read_off(VRS_MESHES "/plate-slots.off");
+  size_t faces[2];
+  for (int any_cost = 0; any_cost < 2; ++any_cost) {
+    vrs::Mesh out = in;
+    vrs::Options o;
+    o.target.kind = vrs::TargetKind::Ratio;
+    o.target.ratio = 0.01;
+    o.max_price_jump = any_cost ? 0.0 : 10.0;
+    const vrs::Report r = vrs::simplify(out, o);
+    ASSERT_TRUE(r.ok) << r.message;
+    faces[any_cost] = out.face_count();
+  }
+  EXPECT_LT(faces[1], faces[0]);
+}
+
 // A thin plate with three tunnels on a grid tessellation: the same, from the generator.
 TEST(InputSurface, ThinPlateWithTunnelsStopsWithEveryFaceOnItsSide) {
   const vrs::Mesh in =

@@ -132,15 +132,18 @@ struct Options {
   // vertex it carries (4 bytes a vertex and a face, about an eighth more time). Once the
   // vetoes are eased to reach a count target (Report::relaxed_removals), with either
   // priority, a new triangle must also not turn more than 90 degrees from the input face
-  // nearest it (the input's faces are kept for that: 12 bytes a face).
+  // nearest it (the input's faces are kept for that: 12 bytes a face), unless the target is
+  // asked at any cost (max_price_jump 0).
   bool against_input = true;
   // With Priority::LocalError and a count target: when the cheapest removal left would cost
   // more than this many times the dearest one made so far (and more than 1e-3 of the
   // bounding-box diagonal), the surface is about to change abruptly (a part dropped, a tunnel
   // pressed flat) rather than lose detail. Then a new triangle may first face away from the
   // input's normal at one of its three corners (until then at none); at the next such jump the
-  // run stops short (StopReason::NoCandidates, stop_detail says so). 0: the target at any cost.
-  // Not with a finite max_error: the bound says how far a removal may go.
+  // run stops short (StopReason::NoCandidates, stop_detail says so). Once eased, removals are
+  // measured from the dearest one made before. 0: the target at any cost (the eased passes
+  // may then fold over the input where nothing else reaches it). Not with a finite max_error:
+  // the bound says how far a removal may go.
   double max_price_jump = 10.0;
   // Threads to plan removals on (0: the machine's hardware threads). The output is the same
   // whatever the number: independent removals are planned together, committed in queue order.
