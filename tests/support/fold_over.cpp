@@ -94,21 +94,36 @@ class FaceGrid {
   uint32_t round_ = 0;
 };
 
+double distance_to_face(const vrs::Mesh& m, uint32_t f, Vec3 x) {
+  return vrs::point_triangle_distance(x, at(m, m.triangles[3 * f]), at(m, m.triangles[3 * f + 1]),
+                                      at(m, m.triangles[3 * f + 2]));
+}
+
+Vec3 face_normal(const vrs::Mesh& m, size_t f) {
+  Vec3 a = at(m, m.triangles[3 * f]);
+  return vrs::normalized(
+      vrs::cross(at(m, m.triangles[3 * f + 1]) - a, at(m, m.triangles[3 * f + 2]) - a));
+}
+
+// The distance from x to the nearest input face (+inf when there is none): the search grows
+// until a face within the searched radius is seen.
+double nearest_distance(FaceGrid& grid, const vrs::Mesh& in, Vec3 x) {
+  double nearest = INFINITY;
+  for (double radius = grid.cell(); !(nearest <= radius); radius *= 2) {
+    grid.near(x, radius,
+              [&](uint32_t g) { nearest = std::min(nearest, distance_to_face(in, g, x)); });
+    if (radius > 1e30) break;
+  }
+  return nearest;
+}
+
 } // namespace
 
 size_t count_fold_overs(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Report& r) {
   if (in.face_count() == 0) return 0;
   FaceGrid grid(in);
-  auto distance = [&](uint32_t f, Vec3 x) {
-    return vrs::point_triangle_distance(x, at(in, in.triangles[3 * f]),
-                                        at(in, in.triangles[3 * f + 1]),
-                                        at(in, in.triangles[3 * f + 2]));
-  };
-  auto normal = [&](const vrs::Mesh& m, size_t f) {
-    Vec3 a = at(m, m.triangles[3 * f]);
-    return vrs::normalized(
-        vrs::cross(at(m, m.triangles[3 * f + 1]) - a, at(m, m.triangles[3 * f + 2]) - a));
-  };
+  auto distance = [&](uint32_t f, Vec3 x) { return distance_to_face(in, f, x); };
+  auto normal = face_normal;
   size_t folds = 0;
   for (size_t f = 0; f < out.face_count(); ++f) {
     if (r.face_source[f] != vrs::kRemoved) continue;
@@ -116,12 +131,7 @@ size_t count_fold_overs(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Re
          c = at(out, out.triangles[3 * f + 2]);
     const Vec3 n = normal(out, f), x = (a + b + c) * (1.0 / 3);
     if (!vrs::is_finite(x) || vrs::length(n) == 0) continue;
-    // The nearest input face: grow the search until a face within the searched radius is seen.
-    double nearest = INFINITY;
-    for (double radius = grid.cell(); !(nearest <= radius); radius *= 2) {
-      grid.near(x, radius, [&](uint32_t g) { nearest = std::min(nearest, distance(g, x)); });
-      if (radius > 1e30) break;
-    }
+    const double nearest = nearest_distance(grid, in, x);
     if (!std::isfinite(nearest)) continue;
     const double edge = std::max({vrs::length(b - a), vrs::length(c - b), vrs::length(a - c)});
     const double reach = nearest + 0.5 * edge + 1e-9 * edge;
@@ -140,27 +150,15 @@ size_t count_fold_overs(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Re
 size_t count_faces_against_nearest_input(const vrs::Mesh& in, const vrs::Mesh& out) {
   if (in.face_count() == 0) return 0;
   FaceGrid grid(in);
-  auto distance = [&](uint32_t f, Vec3 x) {
-    return vrs::point_triangle_distance(x, at(in, in.triangles[3 * f]),
-                                        at(in, in.triangles[3 * f + 1]),
-                                        at(in, in.triangles[3 * f + 2]));
-  };
-  auto normal = [&](const vrs::Mesh& m, size_t f) {
-    Vec3 a = at(m, m.triangles[3 * f]);
-    return vrs::normalized(
-        vrs::cross(at(m, m.triangles[3 * f + 1]) - a, at(m, m.triangles[3 * f + 2]) - a));
-  };
+  auto distance = [&](uint32_t f, Vec3 x) { return distance_to_face(in, f, x); };
+  auto normal = face_normal;
   size_t folds = 0;
   for (size_t f = 0; f < out.face_count(); ++f) {
     Vec3 a = at(out, out.triangles[3 * f]), b = at(out, out.triangles[3 * f + 1]),
          c = at(out, out.triangles[3 * f + 2]);
     const Vec3 n = normal(out, f), x = (a + b + c) * (1.0 / 3);
     if (!vrs::is_finite(x) || vrs::length(n) == 0) continue;
-    double nearest = INFINITY;
-    for (double radius = grid.cell(); !(nearest <= radius); radius *= 2) {
-      grid.near(x, radius, [&](uint32_t g) { nearest = std::min(nearest, distance(g, x)); });
-      if (radius > 1e30) break;
-    }
+    const double nearest = nearest_distance(grid, in, x);
     if (!std::isfinite(nearest)) continue;
     const double reach = nearest * (1 + 1e-6) + 1e-12;
     bool agrees = false;
