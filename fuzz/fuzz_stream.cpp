@@ -1,7 +1,7 @@
-// libFuzzer target of the tiled runs' streaming readers: any bytes, read as PLY and as OBJ
-// (the first byte picks), must give a message or a stream of vertices and triangles, never a
-// crash, a hang or an allocation the input does not pay for. Cheap per input, so it runs
-// thousands of executions a second (the core's target: ~50).
+// libFuzzer target of the tiled runs' streaming readers: any bytes, read as PLY, OBJ or OFF
+// (the first byte picks: its value modulo 3), must give a message or a stream of vertices and
+// triangles, never a crash, a hang or an allocation the input does not pay for. Cheap per input, so
+// it runs thousands of executions a second (the core's target: ~50).
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -11,7 +11,8 @@
 
 extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
   if (size == 0) return 0;
-  const std::string name = data[0] & 1 ? "in.obj" : "in.ply";
+  static const char* const names[3] = {"in.ply", "in.obj", "in.off"};
+  const std::string name = names[data[0] % 3];
   std::FILE* f = fmemopen(const_cast<uint8_t*>(data + 1), size - 1, "rb");
   if (!f) return 0;
   uint64_t vertices = 0, triangles = 0;

@@ -30,14 +30,15 @@ echo "fuzz: ${seconds} s, seed ${seed} (0: drawn), corpus $b/corpus, seeds $b/se
 grep -E "stat::number_of_executed_units|stat::peak_rss_mb" "$b/fuzz.log"
 grep -E "^#[0-9]+.*(DONE|pulse)" "$b/fuzz.log" | tail -1
 
-# The streaming readers: seeds are small PLY (ascii, binary) and OBJ files, a first byte each
-# saying which reader (even: PLY, odd: OBJ).
+# The streaming readers: seeds are small PLY (ascii, binary), OBJ and OFF files, a first byte
+# each saying which reader (its value modulo 3: 0 PLY, 1 OBJ, 2 OFF).
 s=$b/stream-seeds
 mkdir -p "$s" "$b/stream-corpus"
 { printf '\0'; printf 'ply\nformat ascii 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n0 0 0\n1 0 0\n0 1 0\n3 0 1 2\n'; } >"$s/ascii.ply"
 { printf '\0'; printf 'ply\nformat binary_little_endian 1.0\nelement vertex 3\nproperty float x\nproperty float y\nproperty float z\nelement face 1\nproperty list uchar int vertex_indices\nend_header\n'
   head -c 36 /dev/zero; printf '\003\000\000\000\000\001\000\000\000\002\000\000\000'; } >"$s/binary.ply"
 { printf '\1'; printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\nv 1 1 1\nvt 0 0\nf 1/1 2/1 3/1 4/1\nf -1 -2 -3\n'; } >"$s/quad.obj"
+{ printf '\2'; printf 'OFF\n4 2 0\n0 0 0\n1 0 0\n0 1 0\n1 1 1\n3 0 1 2 255 0 0\n4 0 1 3 2\n'; } >"$s/colored.off"
 stream_seconds=$(( seconds / 4 > 10 ? seconds / 4 : 10 ))
 "$b/bin/vrs_fuzz_stream" -seed="$seed" -max_total_time="$stream_seconds" -max_len=4096 -timeout=5 -rss_limit_mb=2048 \
   -print_final_stats=1 -artifact_prefix="$b/findings/" "$b/stream-corpus" "$s" 2>"$b/fuzz-stream.log" || {

@@ -150,6 +150,20 @@ template <class T> void put(unsigned char* out, double v) {
   std::memcpy(out, &x, sizeof x);
 }
 
+// Whether v converts to type t without overflow (a file's 4e21 in a uchar field is malformed,
+// and converting it would be undefined).
+bool fits(Type t, double v) {
+  switch (t) {
+  case Type::Int8: return v > -129 && v < 128;
+  case Type::UInt8: return v > -1 && v < 256;
+  case Type::Int16: return v > -32769 && v < 32768;
+  case Type::UInt16: return v > -1 && v < 65536;
+  case Type::Int32: return v > -2147483649.0 && v < 2147483648.0;
+  case Type::UInt32: return v > -1 && v < 4294967296.0;
+  default: return true; // a float takes any double (an overflow is inf, defined)
+  }
+}
+
 // Packs a face property's value into `out` at `at` as its type (what CornerKeys::group holds).
 void pack(Type t, double v, unsigned char* out, size_t at) {
   switch (t) {
@@ -282,6 +296,9 @@ std::string read_ply(std::FILE* in, const StreamSink& sink) {
           for (int a = 0; a < 3; ++a)
             if (int(i) == xyz[a]) p3[a] = v;
           if (is_face && packed_at + size_of(p.type) <= 4) {
+            if (!fits(p.type, v))
+              return "PLY face " + std::to_string(k) + ": a value of " + p.name +
+                     " does not fit its type";
             pack(p.type, v, packed, packed_at);
             packed_at += size_of(p.type);
           }
@@ -483,7 +500,8 @@ std::string read_off(std::FILE* in, const StreamSink& sink) {
       return "truncated or malformed OFF face " + std::to_string(int64_t(i));
     poly.clear();
     for (int j = 0; j < int(k); ++j) {
-      if (!number(v)) return "truncated or malformed OFF face " + std::to_string(int64_t(i));
+      if (!number(v) || !(std::fabs(v) < 9e18)) // 1e30 is no index (nor an int64)
+        return "truncated or malformed OFF face " + std::to_string(int64_t(i));
       poly.push_back(int64_t(v));
     }
     if (!rest().empty() && !told && sink.uncarried) { // a face color
