@@ -30,13 +30,16 @@ class InputSurface {
   bool nearest(Vec3 x, const Evaluator& eval, double& d2, Vec3& normal) const;
 
   // Whether some new triangle of the patch turns more than 90 degrees from the input face
-  // nearest one of its sample points (its centroid, and halfway from there to each corner):
+  // nearest one of its sample points (its centroid and halfway from there to each corner; a
+  // grid of up to 36 points on a triangle that covers more than 16 input faces):
   // a fold-over as the benchmark measures one, against the input itself. Where several input
   // faces are nearest (an edge, a crease), one agreeing is enough.
   bool folds(const Patch& patch, const Evaluator& eval) const;
 
  private:
   static constexpr int kLeaf = 4;
+  static constexpr double kGridPerSide = 0.5; // grid cells along a side per sqrt(faces covered)
+  static constexpr int kGridMax = 6;
   struct Box {
     float lo[3], hi[3];
   };
@@ -47,6 +50,7 @@ class InputSurface {
   Vec3 face_normal(size_t f, const Evaluator& eval) const;
 
   std::vector<uint32_t> tris_;           // 3 a face, faces with area only
+  double mean_area_ = 0;                 // of the input's faces with area
   std::vector<std::vector<Box>> levels_; // levels_[0]: one box per leaf; the last: the root
 };
 

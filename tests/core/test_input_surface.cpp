@@ -66,6 +66,49 @@ TEST(InputSurface, FoldsIsATriangleTurnedAgainstTheInputFaceNearestIt) {
   EXPECT_FALSE(input.folds(patch_of({1, 1, low}, {2, 3, low}, {3, 1, low}), eval));
 }
 
+// A triangle over many input faces is sampled on a grid, not at four points only: over a
+// flat sheet of 3200 faces facing up, one large triangle facing up agrees with it, until a
+// small patch facing down hangs just above one of its corners (nearer there than the sheet),
+// where none of the four points of a small triangle would look.
+TEST(InputSurface, ALargeTriangleIsJudgedAllOver) {
+  vrs::Mesh input = vrs_test::grid(40);
+  auto patch_of = [](Vec3 a, Vec3 b, Vec3 c) {
+    vrs::Patch p;
+    p.count = 1;
+    p.tri[0] = {0, 1, 2};
+    p.q[0] = a, p.q[1] = b, p.q[2] = c;
+    return p;
+  };
+  const double h = 0.3;
+  const vrs::Patch large = patch_of({0, 0, h}, {40, 0, h}, {0, 40, h});
+  {
+    const vrs::Evaluator eval = evaluator(input);
+    vrs::InputSurface surface;
+    surface.keep(input.triangles);
+    surface.build(eval);
+    EXPECT_FALSE(surface.folds(large, eval));
+  }
+  // The overhang: a square of side 1 at z = h + 0.1 around (2.2, 2.2), facing down.
+  const uint32_t base = uint32_t(input.vertex_count());
+  for (const auto& xy : {std::pair{1.7f, 1.7f}, {2.7f, 1.7f}, {2.7f, 2.7f}, {1.7f, 2.7f}})
+    input.positions.insert(input.positions.end(), {xy.first, xy.second, float(h + 0.1)});
+  input.triangles.insert(input.triangles.end(),
+                         {base, base + 2, base + 1, base, base + 3, base + 2});
+  const vrs::Evaluator eval = evaluator(input);
+  vrs::InputSurface surface;
+  surface.keep(input.triangles);
+  surface.build(eval);
+  EXPECT_TRUE(surface.folds(large, eval));
+  // Its four points alone (centroid, halfway to each corner) all lie nearer the sheet.
+  for (const Vec3 x : {Vec3{40.0 / 3, 40.0 / 3, h}, Vec3{20.0 / 3, 20.0 / 3, h},
+                       Vec3{80.0 / 3, 20.0 / 3, h}, Vec3{20.0 / 3, 80.0 / 3, h}}) {
+    double d2;
+    Vec3 n;
+    ASSERT_TRUE(surface.nearest(x, eval, d2, n));
+    EXPECT_GT(n.z, 0.99);
+  }
+}
+
 // A CAD plate with two slots (long thin triangles, genus 2) cannot reach 1 % of its faces:
 // the relaxed passes once crumpled it into faces lying across the plate, nearer its far side
 // (4 of 28 faces here; a quarter of the area on such plates at 1 %). It now stops with every
