@@ -15,6 +15,15 @@ namespace {
 
 using vrs::Vec3;
 
+// A patch of one new triangle (a, b, c), counter-clockwise.
+vrs::Patch patch_of(Vec3 a, Vec3 b, Vec3 c) {
+  vrs::Patch p;
+  p.count = 1;
+  p.tri[0] = {0, 1, 2};
+  p.q[0] = a, p.q[1] = b, p.q[2] = c;
+  return p;
+}
+
 vrs::Evaluator evaluator(const vrs::Mesh& m) {
   return vrs::Evaluator(vrs::Mode::Surface3D, {0, 0, 1}, m.positions.data());
 }
@@ -52,13 +61,6 @@ TEST(InputSurface, FoldsIsATriangleTurnedAgainstTheInputFaceNearestIt) {
   vrs::InputSurface input;
   input.keep(plate.triangles);
   input.build(eval);
-  auto patch_of = [](Vec3 a, Vec3 b, Vec3 c) {
-    vrs::Patch p;
-    p.count = 1;
-    p.tri[0] = {0, 1, 2};
-    p.q[0] = a, p.q[1] = b, p.q[2] = c;
-    return p;
-  };
   const double top = 0.2 - 1e-3, low = 0.02;
   EXPECT_FALSE(input.folds(patch_of({1, 1, top}, {3, 1, top}, {2, 3, top}), eval));
   EXPECT_TRUE(input.folds(patch_of({1, 1, top}, {2, 3, top}, {3, 1, top}), eval));
@@ -72,13 +74,6 @@ TEST(InputSurface, FoldsIsATriangleTurnedAgainstTheInputFaceNearestIt) {
 // where none of the four points of a small triangle would look.
 TEST(InputSurface, ALargeTriangleIsJudgedAllOver) {
   vrs::Mesh input = vrs_test::grid(40);
-  auto patch_of = [](Vec3 a, Vec3 b, Vec3 c) {
-    vrs::Patch p;
-    p.count = 1;
-    p.tri[0] = {0, 1, 2};
-    p.q[0] = a, p.q[1] = b, p.q[2] = c;
-    return p;
-  };
   const double h = 0.3;
   const vrs::Patch large = patch_of({0, 0, h}, {40, 0, h}, {0, 40, h});
   {
