@@ -200,21 +200,16 @@ bool InputSurface::folds(const Patch& patch, const Evaluator& eval) const {
   for (int t = 0; t < patch.count; ++t) {
     const auto& tri = patch.tri[t];
     const Vec3 a = patch.q[tri[0]], b = patch.q[tri[1]], c = patch.q[tri[2]];
-    const Vec3 n = normalized(cross(b - a, c - a));
-    const Vec3 m = (a + b + c) * (1.0 / 3);
-    // A triangle spanning many input faces gets a denser grid (the centroids of its L x L
-    // sub-triangles, L growing with the square root of how many input faces it covers): four
-    // points missed folds on small outputs (tuning set, 1 % p90 of the mean-error ratio to
-    // QECD 1.86 -> 1.69; finer or larger grids no better; bench/ablation.md).
-    const double covers = 0.5 * length(cross(b - a, c - a)) / mean_area_;
+    const Vec3 area_normal = cross(b - a, c - a);
+    const Vec3 n = normalized(area_normal);
+    // The centroids of the triangle's L x L sub-triangles: at L = 2 its centroid and halfway
+    // from there to each corner (four points, not the centroid alone: one missed folds the
+    // benchmark then measured, 1 % p90 of the error ratio 2.40 against 2.04, 14 folded runs
+    // against 5); L grows with the square root of how many input faces it covers, as four
+    // points missed folds on small outputs (tuning set, 1 % p90 1.86 -> 1.69; finer or
+    // larger grids no better; bench/ablation.md).
+    const double covers = 0.5 * length(area_normal) / mean_area_;
     const int L = std::clamp(int(std::ceil(std::sqrt(covers) * kGridPerSide)), 2, kGridMax);
-    if (L <= 2) {
-      // Four points, not the centroid alone: one missed folds the benchmark then measured (1 %
-      // p90 of the error ratio 2.40 against 2.04, 14 folded runs against 5; bench/ablation.md).
-      for (const Vec3 x : {m, (m + a) * 0.5, (m + b) * 0.5, (m + c) * 0.5})
-        if (turned_at(x, n)) return true;
-      continue;
-    }
     for (int i = 0; i < L; ++i)
       for (int j = 0; i + j < L; ++j) {
         const int k = L - 1 - i - j; // the sub-triangle pointing up at (i, j, k)
