@@ -93,72 +93,50 @@ export async function streamLevels(source, onLevel, { stopAfter, decoder } = {})
   const layout = describe(json, 20 + jsonBytes + 8);
   layout.total = total;
   layout.json = json;
-  if (layout.compressed) return streamCompressed(source, layout, onLevel, stopAfter, decoder);
-  const vertices = new Uint8Array(layout.levels[0].vertices * layout.stride);
-  let have = 0; // vertices received so far
-  for (let k = layout.levels.length - 1; k >= 0; --k) {
-    const level = layout.levels[k];
-    const want = level.vertices * layout.stride;
-    let indexBuffer;
-    // The coarsest level's indices lie just before the vertices: one request for both.
-    if (k === layout.levels.length - 1 && level.indexStart + level.indexBytes === layout.vertexStart) {
-      const both = new Uint8Array(await source.read(level.indexStart, layout.vertexStart + want));
-      vertices.set(both.subarray(level.indexBytes), 0);
-      indexBuffer = both.slice(0, level.indexBytes).buffer;
-    } else {
-      const [added, idx] = await Promise.all([
-        source.read(layout.vertexStart + have, layout.vertexStart + want),
-        source.read(level.indexStart, level.indexStart + level.indexBytes),
-      ]);
-      vertices.set(new Uint8Array(added), have);
-      indexBuffer = idx;
-    }
-    have = Math.max(have, want);
-    const indices = level.indexType === 5125 ? new Uint32Array(indexBuffer) : new Uint16Array(indexBuffer);
-    await onLevel({ level, index: k, vertices: vertices.subarray(0, want), indices, layout });
-    if (stopAfter !== undefined && k <= stopAfter) break;
-  }
-  return layout;
-}
-
-// The same for EXT_meshopt_compression: the stream's bytes so far, each level decoded from
-// its prefix of them with the tail appended (a valid stream of that prefix), its indices from
-// their own compressed bytes.
-async function streamCompressed(source, layout, onLevel, stopAfter, decoder) {
   const packed = layout.compressed;
-  if (!decoder) throw new Error("a compressed .glb (EXT_meshopt_compression) needs meshoptimizer's decoder");
-  if (!packed.tail) throw new Error("this compressed .glb cannot stream (no tail of its vertex stream in the JSON)");
-  await decoder.ready;
-  const stream = new Uint8Array(packed.bytes);
-  let have = 0; // stream bytes received so far
+  if (packed && !decoder) throw new Error("a compressed .glb (EXT_meshopt_compression) needs meshoptimizer's decoder");
+  if (packed && !packed.tail) throw new Error("this compressed .glb cannot stream (no tail of its vertex stream in the JSON)");
+  if (packed) await decoder.ready;
+  // The vertex data as received so far: the plain records, or the compressed stream's bytes.
+  const data = new Uint8Array(packed ? packed.bytes : layout.levels[0].vertices * layout.stride);
+  let have = 0; // bytes of it received so far
   for (let k = layout.levels.length - 1; k >= 0; --k) {
     const level = layout.levels[k];
-    const want = k === 0 ? packed.bytes - packed.tail.length : level.extras.streamBytes;
+    // The bytes of the vertex data that hold this level's prefix (compressed: without the
+    // tail, which the JSON holds).
+    const want = !packed ? level.vertices * layout.stride
+      : k === 0 ? packed.bytes - packed.tail.length : level.extras.streamBytes;
     if (!(want > 0)) throw new Error(`level ${k} does not say which bytes of the vertex stream hold it`);
-    let packedIndices;
-    const gap = layout.vertexStart - (level.indexStart + level.indexBytes); // padding to 4 bytes
-    if (k === layout.levels.length - 1 && gap >= 0 && gap < 4) {
+    let indexBytes;
+    // The coarsest level's indices lie just before the vertex data (compressed: up to 3 bytes
+    // of padding between): one request for both.
+    const gap = layout.vertexStart - (level.indexStart + level.indexBytes);
+    if (k === layout.levels.length - 1 && gap >= 0 && gap < (packed ? 4 : 1)) {
       const both = new Uint8Array(await source.read(level.indexStart, layout.vertexStart + want));
-      stream.set(both.subarray(level.indexBytes + gap), 0);
-      packedIndices = both.slice(0, level.indexBytes);
+      data.set(both.subarray(level.indexBytes + gap), 0);
+      indexBytes = both.slice(0, level.indexBytes);
     } else {
       const [added, idx] = await Promise.all([
         want > have ? source.read(layout.vertexStart + have, layout.vertexStart + want) : new ArrayBuffer(0),
         source.read(level.indexStart, level.indexStart + level.indexBytes),
       ]);
-      stream.set(new Uint8Array(added), have);
-      packedIndices = new Uint8Array(idx);
+      data.set(new Uint8Array(added), have);
+      indexBytes = new Uint8Array(idx);
     }
     have = Math.max(have, want);
-    const prefix = new Uint8Array(want + packed.tail.length);
-    prefix.set(stream.subarray(0, want), 0);
-    prefix.set(packed.tail, want);
-    const vertices = new Uint8Array(level.vertices * layout.stride);
-    decoder.decodeVertexBuffer(vertices, level.vertices, layout.stride, prefix);
-    const size = level.indexType === 5125 ? 4 : 2;
-    const raw = new Uint8Array(level.indexCount * size);
-    decoder.decodeIndexBuffer(raw, level.indexCount, size, packedIndices);
-    const indices = size === 4 ? new Uint32Array(raw.buffer) : new Uint16Array(raw.buffer);
+    const wide = level.indexType === 5125;
+    let vertices = data.subarray(0, want), raw = indexBytes;
+    if (packed) {
+      // The prefix's bytes with the tail appended are a valid stream of that prefix.
+      const prefix = new Uint8Array(want + packed.tail.length);
+      prefix.set(data.subarray(0, want), 0);
+      prefix.set(packed.tail, want);
+      vertices = new Uint8Array(level.vertices * layout.stride);
+      decoder.decodeVertexBuffer(vertices, level.vertices, layout.stride, prefix);
+      raw = new Uint8Array(level.indexCount * (wide ? 4 : 2));
+      decoder.decodeIndexBuffer(raw, level.indexCount, wide ? 4 : 2, indexBytes);
+    }
+    const indices = wide ? new Uint32Array(raw.buffer) : new Uint16Array(raw.buffer);
     await onLevel({ level, index: k, vertices, indices, layout });
     if (stopAfter !== undefined && k <= stopAfter) break;
   }
