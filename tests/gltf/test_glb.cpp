@@ -33,17 +33,30 @@ std::string temp_path(const char* name) {
   return ::testing::TempDir() + name;
 }
 
+// An icosphere's chain at 100/50/10/1 %, with normals (a sphere's normals are its positions).
+struct SphereChain {
+  Mesh in = vrs_test::icosphere(4);
+  LodChain chain;
+  std::vector<float> normals;
+  GlbAttributes attributes;
+  SphereChain() {
+    Options o;
+    o.threads = 1;
+    chain = simplify_lods(in, {1.0, 0.5, 0.1, 0.01}, o);
+    normals = in.positions;
+    attributes.normals = normals.data();
+  }
+  SphereChain(const SphereChain&) = delete; // `attributes` points into `normals`
+};
+
 } // namespace
 
 TEST(Glb, LevelsReadBackFromTheStreamingLayout) {
-  const Mesh in = vrs_test::icosphere(4);
-  Options o;
-  o.threads = 1;
-  const LodChain chain = simplify_lods(in, {1.0, 0.5, 0.1, 0.01}, o);
+  const SphereChain sphere;
+  const Mesh& in = sphere.in;
+  const LodChain& chain = sphere.chain;
   ASSERT_TRUE(chain.ok);
-  std::vector<float> normals(in.positions); // a sphere's normals are its positions
-  GlbAttributes a;
-  a.normals = normals.data();
+  GlbAttributes a = sphere.attributes;
   GlbLayout layout;
   const std::string path = temp_path("levels.glb");
   ASSERT_EQ(write_glb(path, in.positions.data(), in.vertex_count(), chain, a, &layout), "");
@@ -176,14 +189,11 @@ TEST(Glb, RefusesWhatGltfCannotHoldAndLeavesNoFile) {
 // decode alone; and the block size the writer assumes is the encoder's (a prefix one vertex
 // past a block is not a prefix of the stream's bytes).
 TEST(Glb, CompressedLevelsAreThePlainOnesAndEachStreamsAlone) {
-  const Mesh in = vrs_test::icosphere(4);
-  Options o;
-  o.threads = 1;
-  const LodChain chain = simplify_lods(in, {1.0, 0.5, 0.1, 0.01}, o);
+  const SphereChain sphere;
+  const Mesh& in = sphere.in;
+  const LodChain& chain = sphere.chain;
   ASSERT_TRUE(chain.ok);
-  std::vector<float> normals(in.positions);
-  GlbAttributes a;
-  a.normals = normals.data();
+  GlbAttributes a = sphere.attributes;
   GlbLayout plain, packed;
   ASSERT_EQ(
       write_glb(temp_path("plain.glb"), in.positions.data(), in.vertex_count(), chain, a, &plain),
@@ -266,7 +276,7 @@ TEST(Glb, CompressedLevelsAreThePlainOnesAndEachStreamsAlone) {
         const double len =
             std::sqrt(double(rec[0]) * rec[0] + double(rec[1]) * rec[1] + double(rec[2]) * rec[2]);
         for (int c3 = 0; c3 < 3; ++c3)
-          rec[3 + c3] = float(normals[3 * v + c3] / len);
+          rec[3 + c3] = float(sphere.normals[3 * v + c3] / len);
         c[j] = std::string(reinterpret_cast<const char*>(rec), 24);
       }
       const int m = c[0] <= c[1] && c[0] <= c[2] ? 0 : c[1] <= c[2] ? 1 : 2;
