@@ -256,6 +256,8 @@ def test_example_script(plugin, meshes, tmp_path):
 
 
 TEXTURED = pathlib.Path(__file__).resolve().parent.parent / "textured" / "textured_mesh.py"
+# The textured quad-dominant sheet with pentagons and hexagons every MeshLab test uses.
+POLYGON_SHEET = pathlib.Path(__file__).resolve().parent.parent / "support" / "polygon_sheet.py"
 
 
 @pytest.mark.parametrize("source", ["charts.ply", "charts.obj", "regr01.obj", "spider.obj"])
@@ -363,37 +365,6 @@ def test_quads_round_trip_through_the_default_obj_save(plugin, tmp_path):
     assert load(out).current_mesh().face_number() == ms.current_mesh().face_number()
 
 
-def _polygon_sheet_obj(path, n=40, seed=1):
-    """A bent, textured quad sheet with hexagons (two quads merged) and pentagons (a quad and
-    half its neighbour), as modelling tools write quad-dominant meshes."""
-    rng = np.random.default_rng(seed)
-    def vid(i, j):
-        return j * (n + 1) + i + 1
-    lines = []
-    for j in range(n + 1):
-        for i in range(n + 1):
-            x, y = i / n, j / n
-            lines += [f"v {x:.6f} {y:.6f} {0.1 * np.sin(3 * x) * np.cos(2 * y):.6f}",
-                      f"vt {x:.6f} {y:.6f}"]
-    used = np.zeros((n, n), bool)
-    polys = []
-    for kind in ["hexagon"] * n + ["pentagon"] * n:
-        i, j = int(rng.integers(0, n - 1)), int(rng.integers(0, n))
-        if used[j, i] or used[j, i + 1]:
-            continue
-        used[j, i] = used[j, i + 1] = True
-        if kind == "hexagon":
-            polys.append([vid(i, j), vid(i + 1, j), vid(i + 2, j), vid(i + 2, j + 1),
-                          vid(i + 1, j + 1), vid(i, j + 1)])
-        else:
-            polys += [[vid(i, j), vid(i + 1, j), vid(i + 2, j), vid(i + 1, j + 1), vid(i, j + 1)],
-                      [vid(i + 2, j), vid(i + 2, j + 1), vid(i + 1, j + 1)]]
-    polys += [[vid(i, j), vid(i + 1, j), vid(i + 1, j + 1), vid(i, j + 1)]
-              for j in range(n) for i in range(n) if not used[j, i]]
-    lines += ["f " + " ".join(f"{a}/{a}" for a in p) for p in polys]
-    path.write_text("\n".join(lines) + "\n")
-
-
 def _polygons_by_position(path):
     """The polygons of an OBJ as sets of rounded positions."""
     verts, polys = _obj_polygons(path)
@@ -416,7 +387,7 @@ def test_polygon_meshes_save_in_every_format_after_the_filter(plugin, tmp_path, 
     filter it can (broken polygons become triangles)."""
     if name == "sheet.obj":
         src = tmp_path / name
-        _polygon_sheet_obj(src)
+        subprocess.run([sys.executable, str(POLYGON_SHEET), str(src)], check=True)
     else:
         src = pathlib.Path("/usr/share/assimp/models") / name
         if not src.exists():
