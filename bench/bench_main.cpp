@@ -73,7 +73,7 @@ bool run_method(const std::string& method, const vrs::Mesh& in, size_t target,
   else if (method == "vtk")
     r = run_vtk(in, target);
   else if (method.rfind("ours", 0) == 0) {
-    // "ours" then any of -factor|-local, -linear|-log, -heap, -intN, e.g. ours-local-heap.
+    // "ours" then any of -factor|-local, -linear|-log, -heap, -whole, -intN, e.g. ours-local-heap.
     vrs::Options o;
     o.threads = 1; // one thread unless -tN: the peers run on one
     std::stringstream parts(method.substr(4));
@@ -109,6 +109,10 @@ bool run_method(const std::string& method, const vrs::Mesh& in, size_t target,
         o.against_input = false;
       else if (p == "heap")
         o.queue = vrs::QueueKind::Heap;
+      else if (p == "whole") // one queue from the start, no parts
+        o.part_vertices = 0;
+      else if (p.rfind("part", 0) == 0 && p.size() > 4) // e.g. ours-part1024
+        o.part_vertices = std::atoi(p.c_str() + 4);
       else if (p.rfind("int", 0) == 0 && p.size() > 3)
         o.intervals = std::atoi(p.c_str() + 3);
       else

@@ -77,7 +77,7 @@ def main(src, dst):
 
 
 def targets(runs, faces, per_face, med):
-    """Issue 18's figures, each met or missed, and what two cores say about sixteen."""
+    """Issue 31's figures, each met or missed, and what two cores say about sixteen."""
     out = ["", "## Targets", "", "| figure | measured | target | |", "|---|---|---|---|"]
     t = lambda mesh, k: med(runs[mesh][k], 0) if runs[mesh][k] else None
     mb = lambda mesh, k: med(runs[mesh][k], 1) if runs[mesh][k] else None
@@ -90,10 +90,8 @@ def targets(runs, faces, per_face, med):
         if not (one and two and mo):
             continue
         if faces[mesh] >= 1_000_000:
-            row(f"{mesh}: 2 threads ÷ meshoptimizer", f"{two / mo:.2f}", "≤ 1.25 (goal 1.0)",
-                two / mo <= 1.25)
-            row(f"{mesh}: 1 thread ÷ meshoptimizer", f"{one / mo:.2f}", "≤ 2.0 (goal 1.5)",
-                one / mo <= 2.0)
+            row(f"{mesh}: 2 threads ÷ meshoptimizer", f"{two / mo:.2f}", "≤ 1.5", two / mo <= 1.5)
+            row(f"{mesh}: 1 thread ÷ meshoptimizer", f"{one / mo:.2f}", "≤ 2.5", one / mo <= 2.5)
         elif faces[mesh] < 100_000:
             row(f"{mesh}: 1 thread ÷ meshoptimizer", f"{one / mo:.2f}", "≤ 3.0", one / mo <= 3.0)
         m1, m2 = mb(mesh, "ours"), mb(mesh, "meshopt")
@@ -103,18 +101,18 @@ def targets(runs, faces, per_face, med):
         growth = hi[2]["ours"] / lo[2]["ours"]
         row(f"time per input face, {lo[1]} → {hi[1]} faces (1 thread)", f"×{growth:.2f}",
             "≤ ×1.25 (goal flat)", growth <= 1.25)
-    big = [m for m in runs if faces[m] >= 4_000_000 and t(m, "ours") and t(m, "ours-t2")]
-    if big:
-        mesh = min(big, key=lambda m: faces[m])
+    notes = []
+    for mesh in sorted(runs, key=lambda m: faces[m]):
+        if faces[mesh] < 1_000_000 or not (t(mesh, "ours") and t(mesh, "ours-t2")):
+            continue
         one, two = t(mesh, "ours"), t(mesh, "ours-t2")
-        row(f"{mesh}: 2 threads ÷ 1 thread speed-up", f"{one / two:.2f}", "≥ 1.7", one / two >= 1.7)
+        row(f"{mesh}: 2 threads ÷ 1 thread speed-up", f"{one / two:.2f}", "≥ 1.9", one / two >= 1.9)
         # Amdahl: T2 = T1 (s + (1 - s) / 2) gives the serial fraction s.
         s = max(0.0, min(1.0, 2 * two / one - 1))
-        out += ["", f"Serial fraction from the two thread counts on {mesh} (Amdahl, "
-                f"T2 = T1·(s + (1 − s)/2)): s = {s:.2f}, so 16 cores would give at most "
-                f"{1 / (s + (1 - s) / 16):.1f}× one thread (8 cores: {1 / (s + (1 - s) / 8):.1f}×); "
-                "the serial part is the queue walk (accounting in queue order) and the set-up's "
-                "ordering, orientation and topology."]
+        notes += ["", f"Serial fraction from the two thread counts on {mesh} (Amdahl, "
+                  f"T2 = T1·(s + (1 − s)/2)): s = {s:.2f}, so 16 cores would give at most "
+                  f"{1 / (s + (1 - s) / 16):.1f}× one thread (8 cores: {1 / (s + (1 - s) / 8):.1f}×)."]
+    out += notes
     return out
 
 

@@ -2,6 +2,7 @@
 
 #include "bucket_queue.h"
 #include "heap_queue.h"
+#include "parts.h"
 #include "simplifier.h"
 
 namespace vrs {
@@ -32,26 +33,34 @@ void fan_area_changes(Vec3 c, const Ring& ring, const Patch& patch,
 template <class Queue> void Simplifier::account(const Planned& p, Queue& queue) {
   const uint32_t v = p.v;
   const Ring& ring = p.ring;
-  const Patch& patch = p.patch;
   std::array<int, 2> seam;
   if (along(v, ring, seam) == Along::Seam) constraints_.merge(v, ring.v[seam[0]], ring.v[seam[1]]);
   flags_[v] |= kFlagRemoved;
-  faces_ -= static_cast<size_t>(ring.faces - patch.count);
+  faces_ -= static_cast<size_t>(ring.faces - p.patch.count);
   --vertices_;
   ++rep_.removed;
   rep_.relaxed_removals += relax_steps_ > 0;
   rep_.max_removed_factor = std::max(rep_.max_removed_factor, double(factor_[v]));
+  touch_ring(p, queue, reprice_, nullptr);
+}
 
+template <class Queue>
+void Simplifier::touch_ring(const Planned& p, Queue& queue, std::vector<uint32_t>& reprice,
+                            const uint8_t* frozen) {
   // The neighbours' planes and rings changed. Queued ones are priced again when popped (lazy);
   // the others (refused, or kept until now) are evaluated now and appended to the back of
-  // their interval, as every neighbour is with eager re-evaluation.
+  // their interval, as every neighbour is with eager re-evaluation. Frozen ones (next to
+  // another part while the parts run) are priced when the parts are done.
+  const Ring& ring = p.ring;
   const auto& area_change = p.area_change; // made on the workers with the plan
   for (int i = 0; i < ring.verts; ++i) {
     const uint32_t u = ring.v[i];
     const float before = lazy_ ? fan_area_[u] : 0.0f;
     if (lazy_) fan_area_[u] = static_cast<float>(before + area_change[i]);
     if (flags_[u] & kFlagLocked) continue;
-    if (lazy_ && queue.contains(u)) {
+    if (frozen && frozen[u]) {
+      flags_[u] |= kFlagStale;
+    } else if (lazy_ && queue.contains(u)) {
       // Stale: priced again when popped. Meanwhile its place follows the part of its price
       // known without a plan: the local error weighs distances by sqrt(fan area), and the
       // fan's area just changed (the distances are taken as they were). Left in place, a
@@ -62,7 +71,7 @@ template <class Queue> void Simplifier::account(const Planned& p, Queue& queue) 
         queue.update(u, factor_[u]);
       }
     } else {
-      reprice_.push_back(u);
+      reprice.push_back(u);
     }
   }
 }
@@ -98,5 +107,7 @@ template void Simplifier::account(const Planned&, BucketQueue&);
 template void Simplifier::account(const Planned&, HeapQueue&);
 template void Simplifier::reprice(BucketQueue&);
 template void Simplifier::reprice(HeapQueue&);
+template void Simplifier::touch_ring(const Planned&, PartQueue&, std::vector<uint32_t>&,
+                                     const uint8_t*);
 
 } // namespace vrs

@@ -61,19 +61,33 @@ size_t repeats_on(const uint64_t* begin, const uint64_t* end, const uint32_t* t,
 } // namespace
 
 size_t orient_coherently(std::vector<uint32_t>& tris, const Topology& topo, const uint32_t* rank,
-                         std::vector<uint8_t>& flipped) {
+                         std::vector<uint8_t>& flipped, Workers* workers) {
   const size_t faces = tris.size() / 3;
   const uint32_t* t = tris.data();
   // A cheap look first: does any manifold edge have its two faces walk it the same way? Such
-  // an edge is walked a -> b by both, so looking from the faces where a < b finds it.
-  bool coherent = true;
+  // an edge is walked a -> b by both, so looking from the faces where a < b finds it. In
+  // blocks on the workers: a tenth of the serial set-up at 1.2 M faces.
+  constexpr size_t kBlock = 16384;
+  const size_t blocks = (faces + kBlock - 1) / kBlock;
+  std::vector<uint8_t> incoherent(blocks, 0);
+  auto look = [&](size_t block) {
+    bool same = false;
+    for (size_t f = block * kBlock; f < std::min(faces, (block + 1) * kBlock); ++f)
+      for (int e = 0; e < 3; ++e) {
+        const uint32_t a = t[3 * f + e], b = t[3 * f + (e + 1) % 3];
+        if (a < b && across(uint32_t(f), a, b, t, topo, same) != kNone && same) {
+          incoherent[block] = 1;
+          return;
+        }
+      }
+  };
+  if (workers)
+    workers->for_each(blocks, look, 1);
+  else
+    for (size_t b = 0; b < blocks; ++b)
+      look(b);
+  if (std::find(incoherent.begin(), incoherent.end(), 1) == incoherent.end()) return 0;
   bool same = false;
-  for (size_t f = 0; f < faces && coherent; ++f)
-    for (int e = 0; e < 3 && coherent; ++e) {
-      const uint32_t a = t[3 * f + e], b = t[3 * f + (e + 1) % 3];
-      if (a < b && across(uint32_t(f), a, b, t, topo, same) != kNone && same) coherent = false;
-    }
-  if (coherent) return 0;
 
   // Breadth-first over manifold edges: a face's reversal follows from its neighbour's. Each
   // piece's faces are a range of `order`, with its edges not held by exactly two faces.

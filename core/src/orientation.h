@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "topology.h"
+#include "workers.h"
 
 namespace vrs {
 
@@ -17,7 +18,8 @@ namespace vrs {
 // lowest `rank`: the caller's numbering, so the choice does not depend on the faces' order).
 // `flipped[f]` is set for each face reversed (sized to the face count when something is).
 // Returns the number reversed. `topo` holds the faces' vertex lists (a reversal keeps them).
+// The first look (is anything to do?) runs on `workers` when given.
 size_t orient_coherently(std::vector<uint32_t>& tris, const Topology& topo, const uint32_t* rank,
-                         std::vector<uint8_t>& flipped);
+                         std::vector<uint8_t>& flipped, Workers* workers = nullptr);
 
 } // namespace vrs

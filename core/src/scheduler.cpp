@@ -33,8 +33,34 @@ void TakenMarks::clear(std::vector<uint8_t>& flags) {
 // accounting will read of an accepted plan (found then in the shared cache). Together they
 // saved about a sixth of the time on one thread at 1.2 M faces, and the last one an eighth
 // of the two-thread time at 4.8 M.
-template <class Queue> void Simplifier::plan_batch(size_t count, const Queue& queue) {
+void Simplifier::plan_removal(Planned& p) const {
   const bool local = opt_.priority == Priority::LocalError;
+  const uint32_t* tris = mesh_.triangles.data();
+  p.stale = flags_[p.v] & kFlagStale;
+  p.why = RejectCount;
+  p.usable = removable(topo_.ring(p.v, tris, opt_.max_valence, p.ring));
+  if (!p.usable) return;
+  for (int i = 0; i < p.ring.verts; ++i) {
+    topo_.prefetch_list(p.ring.v[i]);
+    prefetch(&normals_[4 * size_t(p.ring.v[i])]);
+  }
+  double chord = 0, cost = 0;
+  Evaluation e = evaluate_plane(p.v, p.ring, &chord);
+  for (int i = 0; i < p.ring.verts; ++i)
+    topo_.prefetch_faces(p.ring.v[i], tris);
+  if (!std::isfinite(e.factor)) {
+    p.usable = false;
+    return;
+  }
+  // The plan is made again: a diagonal may have become an edge since v was queued. Only a
+  // stale price is made again.
+  p.why = plan(p.v, p.ring, e, p.patch, cost, /*check_topology=*/true, p.stale && local);
+  p.priority = local ? std::max(cost, chord) : e.factor;
+  if (p.why == RejectCount && lazy_)
+    fan_area_changes(eval_.position(p.v), p.ring, p.patch, p.area_change);
+}
+
+template <class Queue> void Simplifier::plan_batch(size_t count, const Queue& queue) {
   const uint32_t* tris = mesh_.triangles.data();
   workers_.for_each(count, [&](size_t b) {
     Planned& p = batch_[b];
@@ -42,28 +68,8 @@ template <class Queue> void Simplifier::plan_batch(size_t count, const Queue& qu
     p.from = batch_from_;
     if (b + 2 < count) topo_.prefetch_list(batch_ids_[b + 2]);
     if (b + 1 < count) topo_.prefetch_faces(batch_ids_[b + 1], tris);
-    p.stale = flags_[p.v] & kFlagStale;
-    p.why = RejectCount;
-    p.usable = removable(topo_.ring(p.v, tris, opt_.max_valence, p.ring));
-    if (!p.usable) return;
-    for (int i = 0; i < p.ring.verts; ++i) {
-      topo_.prefetch_list(p.ring.v[i]);
-      prefetch(&normals_[4 * size_t(p.ring.v[i])]);
-    }
-    double chord = 0, cost = 0;
-    Evaluation e = evaluate_plane(p.v, p.ring, &chord);
-    for (int i = 0; i < p.ring.verts; ++i)
-      topo_.prefetch_faces(p.ring.v[i], tris);
-    if (!std::isfinite(e.factor)) {
-      p.usable = false;
-      return;
-    }
-    // The plan is made again: a diagonal may have become an edge since v was queued. Only a
-    // stale price is made again.
-    p.why = plan(p.v, p.ring, e, p.patch, cost, /*check_topology=*/true, p.stale && local);
-    p.priority = local ? std::max(cost, chord) : e.factor;
-    if (p.why != RejectCount) return;
-    if (lazy_) fan_area_changes(eval_.position(p.v), p.ring, p.patch, p.area_change);
+    plan_removal(p);
+    if (!p.usable || p.why != RejectCount) return;
     for (int i = -1; i < p.ring.verts; ++i) {
       const uint32_t u = i < 0 ? p.v : p.ring.v[i];
       queue.prefetch(u);

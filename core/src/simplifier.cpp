@@ -174,7 +174,9 @@ Report simplify(Mesh& mesh, const Options& options) {
 
   Simplifier s(mesh, options, rep);
   s.prepare();
-  if (options.queue == QueueKind::Heap) {
+  if (!s.run_parts()) {
+    // cancelled while the parts ran
+  } else if (options.queue == QueueKind::Heap) {
     HeapQueue q;
     s.run(q);
   } else {

@@ -13,6 +13,7 @@
 #include "carried_points.h"
 #include "constraints.h"
 #include "evaluation.h"
+#include "parts.h"
 #include "removal.h"
 #include "scheduler.h"
 #include "spatial_order.h"
@@ -38,13 +39,16 @@ class Simplifier {
   void prepare(); // setup.cpp
   // Options::simplify_boundary_when_needed: whether the kept border would take more than a
   // quarter of the count target (setup.cpp).
-  bool border_needs_simplifying() const;
+  bool border_needs_simplifying();
   // Whether keeping `border` vertices of a surface of `used` vertices and the input's faces
   // would take more than `share` of the count target (at least 2B - 2V + F faces, Euler).
   bool border_takes(size_t border, size_t used, double share) const;
   // Then the border vertices at another border vertex's exact position (a seam of split
   // vertices) stay: kFlagTwin.
   void lock_split_seams();
+  // Simplification by parts (parts.h), when the mesh is large enough: the first removals, on
+  // the parts' own queues; false when cancelled.
+  bool run_parts();                              // parts.cpp
   template <class Queue> void run(Queue& queue); // simplifier.cpp
   void compact();                                // output.cpp
   // Why the remaining vertices stay, when the target was not met (Report::stop_detail).
@@ -88,6 +92,8 @@ class Simplifier {
   static double estimate(const void* self, uint32_t v, const Ring& ring, const Patch& patch);
 
   // --- scheduler.cpp
+  // Plans p.v's removal against today's mesh (reads only: the workers call it).
+  void plan_removal(Planned& p) const;
   // Plans batch_ids_[0, count) into batch_ on the workers against today's mesh.
   template <class Queue> void plan_batch(size_t count, const Queue& queue);
 
@@ -97,9 +103,26 @@ class Simplifier {
   // rewrite() of the faces and their lists, on the workers: the removals of a batch touch
   // disjoint vertices.
   template <class Queue> void account(const Planned& p, Queue& q);
+  // The removal's neighbours: queued ones marked stale, the others put on `reprice`; frozen
+  // ones (parts.h; null: none) marked stale only.
+  template <class Queue>
+  void touch_ring(const Planned& p, Queue& q, std::vector<uint32_t>& reprice,
+                  const uint8_t* frozen);
   void rewrite(Planned& p);
   // Prices the vertices on `reprice_` (on the workers) and queues them again.
   template <class Queue> void reprice(Queue& queue);
+
+  // --- parts.cpp
+  struct Part;
+  static constexpr int kPartRounds = 32;
+  static constexpr double kPartsLeave = 0.15; // of the removals: the last ones for the whole queue
+  bool by_parts() const;
+  size_t removals_needed() const;
+  // One cut's rounds (false: cancelled), then its frozen vertices priced again.
+  bool run_cut(Parts& parts, size_t needed0);
+  void price_frozen(const Parts& parts);
+  // Removes the part's cheapest vertices up to `threshold`, at most `cap` of them.
+  void run_part(Part& part, double threshold, size_t cap, const uint8_t* frozen);
 
   // --- last_resort.cpp
   // When a count target is not met and nothing is left to remove, or the next removal would
@@ -152,9 +175,12 @@ class Simplifier {
   std::vector<float> fan_area_; // area of each vertex's faces (kept up to date with lazy_)
   std::vector<float> normals_;  // unit vertex normals of the input surface, 3 a vertex
   std::vector<uint8_t> flags_;  // vertex_flags.h
-  void set_refused(uint32_t v, Reject why) {
-    flip_refused_ += size_t(why == RejectFlip) - size_t(refused(v) == RejectFlip);
+  void set_refused(uint32_t v, Reject why) { flip_refused_ += size_t(refuse(v, why)); }
+  // Records v's last refusal; returns the change of flip_refused_ (parts count their own).
+  ptrdiff_t refuse(uint32_t v, Reject why) {
+    const ptrdiff_t change = ptrdiff_t(why == RejectFlip) - ptrdiff_t(refused(v) == RejectFlip);
     flags_[v] = uint8_t((flags_[v] & ~kRefusedMask) | (why << kRefusedShift));
+    return change;
   }
   size_t flip_refused_ = 0; // vertices whose last plan a corner's input normal refused
   Reject refused(uint32_t v) const { return Reject((flags_[v] & kRefusedMask) >> kRefusedShift); }

@@ -47,6 +47,27 @@ void Topology::grow(uint32_t v) {
   capacity_[v] = cap;
 }
 
+std::vector<Topology::Arena> Topology::reserve_arenas(const std::vector<size_t>& sizes) {
+  std::vector<Arena> arenas(sizes.size());
+  size_t at = pool_.size();
+  for (size_t i = 0; i < sizes.size(); ++i) {
+    arenas[i] = {at, at + sizes[i]};
+    at += sizes[i];
+  }
+  pool_.resize(at, kNone);
+  return arenas;
+}
+
+void Topology::add_face(uint32_t v, uint32_t face, Arena& arena) {
+  if (add_face_in_place(v, face)) return;
+  const uint32_t cap = capacity_[v] * 2 + 2;
+  std::copy_n(pool_.begin() + first_[v], count_[v], pool_.begin() + arena.next);
+  first_[v] = static_cast<uint32_t>(arena.next);
+  capacity_[v] = cap;
+  arena.next += cap;
+  add_face_in_place(v, face);
+}
+
 void Topology::add_face(uint32_t v, uint32_t face) {
   if (!add_face_in_place(v, face)) {
     grow(v);

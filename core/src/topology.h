@@ -54,6 +54,23 @@ class Topology {
   const uint32_t* faces_of(uint32_t v) const { return pool_.data() + first_[v]; }
 
   void add_face(uint32_t v, uint32_t face);
+  // Room at the pool's end that one part of the mesh grows its lists into while other parts
+  // grow theirs (simplification by parts): no slice moves into another's, the pool never
+  // reallocates under the threads.
+  struct Arena {
+    size_t next = 0, end = 0;
+  };
+  // Extends the pool by `sizes[i]` slots for each part i (one thread, before the parts run).
+  std::vector<Arena> reserve_arenas(const std::vector<size_t>& sizes);
+  // Slots v's list takes from an arena to hold `count` faces (0 when it has room).
+  size_t growth(uint32_t v, size_t count) const {
+    size_t slots = 0;
+    for (size_t cap = capacity_[v]; count > cap; slots += cap)
+      cap = 2 * cap + 2;
+    return slots;
+  }
+  // add_face growing v's list inside `arena`; the caller made sure growth() fits.
+  void add_face(uint32_t v, uint32_t face, Arena& arena);
   // add_face when v's slice has room (false: nothing done). Never moves memory, so threads may
   // call it on distinct vertices at once.
   bool add_face_in_place(uint32_t v, uint32_t face) {

@@ -148,6 +148,11 @@ struct Options {
   // Threads to plan removals on (0: the machine's hardware threads). The output is the same
   // whatever the number: independent removals are planned together, committed in queue order.
   int threads = 0;
+  // Meshes of four parts or more are cut into parts of this many vertices along space, and
+  // each part makes its cheapest removals on its own queue, all up to one shared price,
+  // before the whole mesh's queue makes the last ones: every thread busy, the same output on
+  // any number of them. 0: the whole mesh's queue from the start.
+  int part_vertices = 16384;
   // A guaranteed error: no point of the output farther than this from the input surface, and
   // no point of the input farther than this from the output (symmetric Hausdorff distance),
   // in mesh units. 0 = off. With a count target too, whichever comes first stops the run.

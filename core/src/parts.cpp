@@ -1,0 +1,306 @@
+// Simplification by parts (parts.h): the parts' rounds up to a shared price, then the whole
+// mesh's queue takes over in Simplifier::run().
+#include "parts.h"
+
+#include <algorithm>
+#include <limits>
+#include <memory>
+
+#include "accounting.h"
+#include "simplifier.h"
+
+namespace vrs {
+
+Parts make_parts(const std::vector<uint32_t>& tris, size_t vertex_count, uint32_t size,
+                 uint32_t shift) {
+  Parts parts;
+  parts.size = size;
+  parts.shift = shift;
+  parts.count = (vertex_count + shift + size - 1) / size;
+  parts.frozen.assign(vertex_count, 0);
+  auto& frozen = parts.frozen;
+  // First the vertices of faces that span parts (a neighbour in another part), then every
+  // vertex of a face holding one of those: a removable vertex's ring then lies in its part
+  // and never reaches a vertex whose ring another part may change.
+  for (size_t i = 0; i + 2 < tris.size(); i += 3) {
+    const uint32_t a = tris[i], b = tris[i + 1], c = tris[i + 2];
+    if (a == kNone) continue;
+    const size_t pa = parts.of(a);
+    if (parts.of(b) != pa || parts.of(c) != pa) frozen[a] = frozen[b] = frozen[c] = 2;
+  }
+  for (size_t i = 0; i + 2 < tris.size(); i += 3) {
+    const uint32_t a = tris[i], b = tris[i + 1], c = tris[i + 2];
+    if (a == kNone) continue;
+    if ((frozen[a] | frozen[b] | frozen[c]) & 2)
+      for (uint32_t u : {a, b, c})
+        frozen[u] |= 1;
+  }
+  return parts;
+}
+
+void PartQueue::init(uint32_t first, size_t count) {
+  first_ = first;
+  seq_ = 0;
+  heap_.clear();
+  heap_.reserve(count); // never more entries than vertices: no doubling's slack
+  pos_.assign(count, kNone);
+}
+
+size_t PartQueue::count_at_most(double f) const {
+  size_t count = 0;
+  for (const Entry& e : heap_)
+    count += e.f <= f;
+  return count;
+}
+
+void PartQueue::sift_up(size_t i) {
+  const Entry e = heap_[i];
+  for (; i > 0 && less(e, heap_[(i - 1) / 2]); i = (i - 1) / 2)
+    place(i, heap_[(i - 1) / 2]);
+  place(i, e);
+}
+
+void PartQueue::sift_down(size_t i) {
+  const Entry e = heap_[i];
+  for (size_t c; (c = 2 * i + 1) < heap_.size(); i = c) {
+    if (c + 1 < heap_.size() && less(heap_[c + 1], heap_[c])) ++c;
+    if (!less(heap_[c], e)) break;
+    place(i, heap_[c]);
+  }
+  place(i, e);
+}
+
+void PartQueue::push(uint32_t v, double f) {
+  if (contains(v)) erase(v);
+  heap_.push_back({float(f), seq_++, v - first_});
+  sift_up(heap_.size() - 1);
+}
+
+void PartQueue::erase(uint32_t v) {
+  const uint32_t i = pos_[v - first_];
+  if (i == kNone) return;
+  pos_[v - first_] = kNone;
+  const Entry last = heap_.back();
+  heap_.pop_back();
+  if (i == heap_.size()) return;
+  place(i, last);
+  sift_up(i);
+  sift_down(pos_[last.v]);
+}
+
+// What one part did in a round, added to the run's counts in part order after it.
+struct Simplifier::Part {
+  PartQueue queue;
+  Topology::Arena arena;
+  std::vector<uint32_t> reprice;
+  size_t faces_removed = 0, removed = 0;
+  double max_factor = 0;
+  std::array<size_t, RejectCount> rejected{};
+  ptrdiff_t flip_refused = 0;
+  bool full = false; // its arena could not take the next removal's lists: done
+};
+
+size_t Simplifier::removals_needed() const {
+  if (target_faces_) return faces_ > target_faces_ ? (faces_ - target_faces_) / 2 : 0;
+  return vertices_ > target_vertices_ ? vertices_ - target_vertices_ : 0;
+}
+
+bool Simplifier::by_parts() const {
+  // Not under an error bound (its stop is the run's) nor with the paper's factor (eager,
+  // cheap prices: the batches suffice); from four parts up.
+  const bool counts = opt_.target.kind == TargetKind::Faces ||
+                      opt_.target.kind == TargetKind::Ratio ||
+                      opt_.target.kind == TargetKind::Vertices;
+  return opt_.part_vertices > 0 && counts && lazy_ && face_bound_.empty() &&
+         mesh_.vertex_count() >= 4 * size_t(opt_.part_vertices);
+}
+
+void Simplifier::run_part(Part& part, double threshold, size_t cap, const uint8_t* frozen) {
+  auto owned = std::make_unique<Planned>(); // kilobytes: not on a worker's stack
+  Planned& p = *owned;
+  const uint32_t* tris = mesh_.triangles.data();
+  constexpr float kInf = std::numeric_limits<float>::infinity();
+  for (size_t done = 0; done < cap && !part.queue.empty() && !part.full;) {
+    const uint32_t v = part.queue.front();
+    if (part.queue.front_factor() > threshold) break;
+    part.queue.erase(v);
+    p.v = v;
+    p.from = -1;
+    plan_removal(p);
+    flags_[v] &= ~kFlagStale;
+    if (!p.usable) {
+      factor_[v] = kInf; // queued again when its ring changes, as the whole queue does
+      continue;
+    }
+    part.flip_refused += refuse(v, p.why);
+    if (p.why != RejectCount) {
+      ++part.rejected[p.why];
+      factor_[v] = kInf;
+      continue;
+    }
+    if (p.stale) { // today's price: it goes only if it still leads, and stays under the price
+      factor_[v] = static_cast<float>(p.priority);
+      if (p.priority > threshold ||
+          (!part.queue.empty() && p.priority > part.queue.front_factor())) {
+        part.queue.push(v, p.priority);
+        continue;
+      }
+    }
+    // The ring's lists grow into the part's arena: enough room, or the part is done.
+    size_t room = 0;
+    const Ring& ring = p.ring;
+    for (int i = 0; i < ring.verts; ++i) {
+      int faces = 0;
+      for (int t = 0; t < p.patch.count; ++t)
+        faces += p.patch.tri[t][0] == i || p.patch.tri[t][1] == i || p.patch.tri[t][2] == i;
+      const int gone = (i > 0 || ring.closed()) + (i < ring.faces);
+      room += topo_.growth(ring.v[i], topo_.valence(ring.v[i]) - gone + faces);
+    }
+    if (room > part.arena.end - part.arena.next) {
+      part.queue.push(v, factor_[v]);
+      part.full = true;
+      break;
+    }
+    flags_[v] |= kFlagRemoved;
+    part.faces_removed += size_t(ring.faces - p.patch.count);
+    ++part.removed;
+    part.max_factor = std::max(part.max_factor, double(factor_[v]));
+    factor_[v] = kInf;
+    touch_ring(p, part.queue, part.reprice, frozen);
+    rewrite(p);
+    for (int i = 0; i < p.overflows; ++i)
+      topo_.add_face(p.overflow[i].first, p.overflow[i].second, part.arena);
+    for (uint32_t u : part.reprice) {
+      Ring r;
+      const VertexKind kind = topo_.ring(u, tris, opt_.max_valence, r);
+      const Priced priced =
+          removable(kind) ? evaluate(u, r) : Priced{std::numeric_limits<double>::infinity()};
+      if (priced.planned) {
+        part.flip_refused += refuse(u, priced.why);
+        if (priced.why != RejectCount) ++part.rejected[priced.why];
+      }
+      factor_[u] = static_cast<float>(priced.priority);
+      flags_[u] &= ~kFlagStale;
+      if (std::isfinite(priced.priority))
+        part.queue.push(u, priced.priority);
+      else
+        part.queue.erase(u);
+    }
+    part.reprice.clear();
+    ++done;
+  }
+}
+
+bool Simplifier::run_parts() {
+  if (!by_parts()) return true;
+  // Two cuts, the second shifted by half a part, each in rounds: the second frees most of
+  // what the first kept frozen along its borders.
+  const size_t needed0 = removals_needed();
+  const uint32_t size = uint32_t(opt_.part_vertices);
+  for (uint32_t shift : {0u, size / 2}) {
+    Parts parts = make_parts(mesh_.triangles, mesh_.vertex_count(), size, shift);
+    if (!run_cut(parts, needed0)) return false;
+    price_frozen(parts);
+  }
+  return true;
+}
+
+bool Simplifier::run_cut(Parts& parts, size_t needed0) {
+  const size_t n = mesh_.vertex_count();
+  for (uint32_t v = 0; v < n; ++v) // seams merge constraints, a structure all parts share
+    if (constraints_.degree(v) > 0) parts.frozen[v] = 1;
+  const uint8_t* frozen = parts.frozen.data();
+  std::vector<Part> part(parts.count);
+  workers_.for_each(
+      parts.count,
+      [&](size_t i) {
+        const uint32_t first = parts.first(i), end = parts.end(i, n);
+        part[i].queue.init(first, end - first);
+        for (uint32_t v = first; v < end; ++v)
+          if (!frozen[v] && !(flags_[v] & kFlagRemoved) && std::isfinite(factor_[v]))
+            part[i].queue.push(v, factor_[v]);
+      },
+      1);
+  std::vector<size_t> arena_sizes(parts.count);
+  // Half a slot a vertex a cut: the two cuts take half the room the pool holds in reserve;
+  // the rest is for the whole queue (a slot each: the pool reallocated then, 19 MB more peak
+  // at 1.2 M faces; a quarter: 26 of 74 parts ran out of room).
+  for (size_t i = 0; i < parts.count; ++i)
+    arena_sizes[i] = size_t(parts.end(i, n) - parts.first(i)) / 2;
+  const auto arenas = topo_.reserve_arenas(arena_sizes);
+  for (size_t i = 0; i < parts.count; ++i)
+    part[i].arena = arenas[i];
+
+  // Rounds: each takes half the removals still needed, up to the price that many vertices are
+  // under (and no part more than it had under that price), so the parts spend their faces as
+  // one queue would; the whole queue then makes the last and dearest ones.
+  std::vector<float> prices;
+  // The price is read off a sample of the vertices (every stride-th), the same for any
+  // threads: the whole list's nth_element was a tenth of the serial time.
+  const size_t stride = std::max<size_t>(1, n / 65536);
+  for (int round = 0; round < kPartRounds; ++round) {
+    const size_t needed = removals_needed();
+    if (needed <= needed0 * kPartsLeave) break;
+    // The frozen vertices count too (at their last price): left out, the price climbed past
+    // them while they waited, and parts of 1024 vertices came out 9x the error.
+    prices.clear();
+    for (uint32_t v = 0; v < n; v += uint32_t(stride))
+      if (frozen[v] ? !(flags_[v] & kFlagRemoved) && std::isfinite(factor_[v])
+                    : part[parts.of(v)].queue.contains(v))
+        prices.push_back(factor_[v]);
+    const size_t k = std::min(prices.size(), needed / 2 / stride);
+    if (k == 0) break;
+    std::nth_element(prices.begin(), prices.begin() + (k - 1), prices.end());
+    const double threshold = prices[k - 1];
+    workers_.for_each(
+        parts.count,
+        [&](size_t i) {
+          run_part(part[i], threshold, part[i].queue.count_at_most(threshold), frozen);
+        },
+        1);
+    size_t removed = 0;
+    for (Part& q : part) {
+      faces_ -= q.faces_removed;
+      vertices_ -= q.removed;
+      removed += q.removed;
+      rep_.removed += q.removed;
+      rep_.max_removed_factor = std::max(rep_.max_removed_factor, q.max_factor);
+      for (int r = 0; r < RejectCount; ++r)
+        rep_.rejected[r] += q.rejected[r];
+      flip_refused_ = size_t(ptrdiff_t(flip_refused_) + q.flip_refused);
+      q.faces_removed = q.removed = 0;
+      q.rejected.fill(0);
+      q.flip_refused = 0;
+    }
+    if (opt_.progress && !opt_.progress(progress_fraction(0, 0))) {
+      rep_.stop = StopReason::Cancelled;
+      return false;
+    }
+    if (removed < k * stride / 8) break; // the prices rose past what the parts may take
+  }
+  return true;
+}
+
+void Simplifier::price_frozen(const Parts& parts) {
+  // The frozen vertices next to a removal: priced now, on the workers, for the next cut or
+  // the whole queue.
+  std::vector<uint32_t> stale;
+  for (uint32_t v = 0; v < mesh_.vertex_count(); ++v)
+    if (parts.frozen[v] && flags_[v] & kFlagStale && !(flags_[v] & kFlagRemoved))
+      stale.push_back(v);
+  std::vector<Priced> priced(stale.size());
+  const uint32_t* tris = mesh_.triangles.data();
+  workers_.for_each(stale.size(), [&](size_t i) {
+    Ring r;
+    const VertexKind kind = topo_.ring(stale[i], tris, opt_.max_valence, r);
+    priced[i] =
+        removable(kind) ? evaluate(stale[i], r) : Priced{std::numeric_limits<double>::infinity()};
+  });
+  for (size_t i = 0; i < stale.size(); ++i) {
+    note(stale[i], priced[i]);
+    factor_[stale[i]] = static_cast<float>(priced[i].priority);
+    flags_[stale[i]] &= ~kFlagStale;
+  }
+}
+
+} // namespace vrs
