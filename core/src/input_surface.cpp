@@ -209,7 +209,10 @@ bool InputSurface::folds(const Patch& patch, const Evaluator& eval) const {
     // points missed folds on small outputs (tuning set, 1 % p90 1.86 -> 1.69; finer or
     // larger grids no better; bench/ablation.md).
     const double covers = 0.5 * length(area_normal) / mean_area_;
-    const int L = std::clamp(int(std::ceil(std::sqrt(covers) * kGridPerSide)), 2, kGridMax);
+    // Clamped before the conversion: a triangle 1e37 times the mean input face (the fuzzer)
+    // made a side past any int.
+    const double side = std::ceil(std::sqrt(covers) * kGridPerSide);
+    const int L = side >= kGridMax ? kGridMax : side > 2 ? int(side) : 2;
     for (int i = 0; i < L; ++i)
       for (int j = 0; i + j < L; ++j) {
         const int k = L - 1 - i - j; // the sub-triangle pointing up at (i, j, k)

@@ -104,6 +104,22 @@ TEST(InputSurface, ALargeTriangleIsJudgedAllOver) {
   }
 }
 
+// A triangle past any grid (1e40 times the mean input face, as the fuzzer made one) is
+// sampled on the largest grid: the side is clamped before it becomes an int (UBSan: a side
+// of 6.5e18 converted was undefined).
+TEST(InputSurface, AHugeTriangleOverTinyFacesIsSampledOnTheLargestGrid) {
+  vrs::Mesh input = vrs_test::grid(4);
+  for (float& x : input.positions)
+    x *= 1e-20f;
+  const vrs::Evaluator eval = evaluator(input);
+  vrs::InputSurface surface;
+  surface.keep(input.triangles);
+  surface.build(eval);
+  const double h = 1e-21;
+  EXPECT_FALSE(surface.folds(patch_of({0, 0, h}, {1e0, 0, h}, {0, 1e0, h}), eval));
+  EXPECT_TRUE(surface.folds(patch_of({0, 0, h}, {0, 1e0, h}, {1e0, 0, h}), eval));
+}
+
 // A CAD plate with two slots (long thin triangles, genus 2) cannot reach 1 % of its faces:
 // the relaxed passes once crumpled it into faces lying across the plate, nearer its far side
 // (4 of 28 faces here; a quarter of the area on such plates at 1 %). It now stops with every
