@@ -86,18 +86,9 @@ Report run(Mesh& m, Options o, int threads) {
 } // namespace
 
 TEST(Parts, SameOutputWhateverTheThreadCountAndEveryInvariantKept) {
-  struct Case {
-    std::string name;
-    Mesh mesh;
-  };
-  std::vector<Case> cases = {{"terrain", vrs_test::terrain(40)},
-                             {"icosphere", vrs_test::icosphere(4)}};
-  for (const char* name : {"elephant", "fandisk", "mushroom"}) {
-    const std::string path = vrs_test::cgal_mesh(std::string(name) + ".off");
-    if (!path.empty()) cases.push_back({name, vrs_test::read_off(path)});
-  }
+  const auto cases = vrs_test::comparison_meshes();
   ASSERT_GE(cases.size(), 5u) << "CGAL's data set is missing";
-  for (const Case& c : cases)
+  for (const auto& c : cases)
     for (int variant = 0; variant < 5; ++variant) {
       Options o;
       o.part_vertices = 64; // small parts: these meshes are cut into dozens

@@ -55,18 +55,9 @@ void expect_same(const Outcome& a, const Outcome& b, const std::string& what) {
 } // namespace
 
 TEST(Threads, SameOutputAndReportWhateverTheThreadCount) {
-  struct Case {
-    std::string name;
-    Mesh mesh;
-  };
-  std::vector<Case> cases = {{"terrain", vrs_test::terrain(40)},
-                             {"icosphere", vrs_test::icosphere(4)}};
-  for (const char* name : {"elephant", "fandisk", "mushroom"}) {
-    const std::string path = vrs_test::cgal_mesh(std::string(name) + ".off");
-    if (!path.empty()) cases.push_back({name, vrs_test::read_off(path)});
-  }
+  const auto cases = vrs_test::comparison_meshes();
   ASSERT_GE(cases.size(), 5u) << "CGAL's data set is missing";
-  for (const Case& c : cases)
+  for (const auto& c : cases)
     for (int variant = 0; variant < 7; ++variant) {
       Options o;
       o.target.ratio = variant == 6 ? 0.01 : 0.1;

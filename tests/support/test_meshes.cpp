@@ -127,6 +127,15 @@ vrs::Mesh terrain(int n) {
   return m;
 }
 
+std::vector<NamedMesh> comparison_meshes() {
+  std::vector<NamedMesh> meshes = {{"terrain", terrain(40)}, {"icosphere", icosphere(4)}};
+  for (const char* name : {"elephant", "fandisk", "mushroom"}) {
+    const std::string path = cgal_mesh(std::string(name) + ".off");
+    if (!path.empty()) meshes.push_back({name, read_off(path)});
+  }
+  return meshes;
+}
+
 vrs::Mesh icosphere(int level) {
   const float t = (1.0f + std::sqrt(5.0f)) / 2.0f;
   vrs::Mesh m;

@@ -26,6 +26,14 @@ vrs::Mesh grid(int n, float jitter = 0.0f);
 vrs::Mesh terrain(int n);
 // Icosphere: 20 * 4^level triangles, closed, genus 0.
 vrs::Mesh icosphere(int level);
+// Meshes of every kind a run meets, for the tests that compare runs with each other (thread
+// counts, parts): an open terrain, a closed icosphere and CGAL's elephant, fandisk and
+// mushroom when the data set is there.
+struct NamedMesh {
+  std::string name;
+  vrs::Mesh mesh;
+};
+std::vector<NamedMesh> comparison_meshes();
 // A closed plate of nx x ny unit cells, `thickness` thick, with a square through-hole at each
 // cell (x, y) listed in `holes` (pairs): genus = the number of holes. Each cell is two
 // triangles on each side; the walls are split `wall_rows` times along the thickness (a CAD
