@@ -8,6 +8,9 @@
 //             bounding-box diagonal) and no face target: faces reached, measured error, and
 //             our certified bound (rows: mesh,input_faces,bound,method,output_faces,seconds,
 //             error_max,error_mean,certified)
+//   vrs_bench --serial MESH RATIO [THREADS]    our default run instrumented: "seconds
+//                                             parallel_seconds serial_fraction" (the time in
+//                                             loops spread over the threads, and the rest)
 //   vrs_bench --loop MESH LEVELS OUT.ply       Loop subdivision (large inputs)
 //   vrs_bench --terrain K OUT.ply              (2^K + 1)^2 fractal terrain
 //   vrs_bench --streamed-terrain N OUT.ply     N^2 terrain written a row at a time (any size)
@@ -217,6 +220,25 @@ int bound(int argc, char** argv) {
   return failures ? 1 : 0;
 }
 
+// Amdahl's serial fraction as the run itself measures it: the time outside the loops spread
+// over the threads, over the whole run (on one thread: what no thread count shortens).
+int serial(int argc, char** argv) {
+  if (argc < 4) return 2;
+  vrs::Mesh m;
+  if (!load_core(argv[2], m)) return 1;
+  vrs::Options o;
+  o.target.ratio = std::atof(argv[3]);
+  o.threads = argc > 4 ? std::atoi(argv[4]) : 1;
+  const vrs::Report r = vrs::simplify(m, o);
+  if (!r.ok) {
+    std::fprintf(stderr, "vrs_bench: %s\n", r.message.c_str());
+    return 1;
+  }
+  std::printf("%.4f %.4f %.4f\n", r.seconds, r.parallel_seconds,
+              1.0 - r.parallel_seconds / r.seconds);
+  return 0;
+}
+
 int make(int argc, char** argv) {
   vrs::Mesh m;
   std::string out;
@@ -259,6 +281,7 @@ int main(int argc, char** argv) {
   if (std::string(argv[1]) == "--compare") return compare(argc, argv);
   if (std::string(argv[1]) == "--info") return info(argc, argv);
   if (std::string(argv[1]) == "--bound") return bound(argc, argv);
+  if (std::string(argv[1]) == "--serial") return serial(argc, argv);
   if (std::string(argv[1]) == "--loop" || std::string(argv[1]) == "--terrain" ||
       std::string(argv[1]) == "--streamed-terrain" || std::string(argv[1]) == "--convert")
     return make(argc, argv);

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """bench/speed.csv -> bench/SPEED.md: medians of alternated runs, ratios to meshoptimizer.
 
-usage: speed_report.py CSV OUT.md
+usage: speed_report.py CSV OUT.md [SERIAL.csv]
 """
 import csv
 import datetime
@@ -116,5 +116,25 @@ def targets(runs, faces, per_face, med):
     return out
 
 
+def serial_section(path):
+    """The run's own account (vrs_bench --serial, one thread): Amdahl from it."""
+    out = ["", "## Serial part, as the run measures it", "",
+           "One thread, `vrs_bench --serial`: the wall time outside the loops the workers share "
+           "(set-up steps, the rounds' bookkeeping, the whole queue's accounting in queue order, "
+           "compaction) over the run. Amdahl's projection from it assumes the rest divides evenly "
+           "over the cores (memory bandwidth and the parts' balance will take some of that).", "",
+           "| mesh | run s | in shared loops s | serial fraction | 8 cores | 16 cores | target (16) | |",
+           "|---|---|---|---|---|---|---|---|"]
+    for row in csv.DictReader(open(path)):
+        s = float(row["serial_fraction"])
+        p8, p16 = 1 / (s + (1 - s) / 8), 1 / (s + (1 - s) / 16)
+        out.append(f"| {row['mesh']} | {float(row['seconds']):.2f} | {float(row['parallel_seconds']):.2f} "
+                   f"| {s:.3f} | {p8:.1f}× | {p16:.1f}× | ≥ 12× | {'met' if p16 >= 12 else '**missed**'} |")
+    return out
+
+
 if __name__ == "__main__":
     main(*sys.argv[1:3])
+    if len(sys.argv) > 3 and os.path.exists(sys.argv[3]):
+        with open(sys.argv[2], "a") as f:
+            f.write("\n".join(serial_section(sys.argv[3])) + "\n")

@@ -3,7 +3,8 @@
 # Loop-subdivided to 1.2 M and 4.8 M faces, at 10 %, our core on 1 and 2 threads and
 # meshoptimizer alternated REPEATS times (medians), QECD once. --scaling adds the time per
 # input face from 75 k to 19 M faces (one run each). Writes bench/speed.csv and bench/SPEED.md
-# (bench/make_report.sh puts it into bench/REPORT.md).
+# (bench/make_report.sh puts it into bench/REPORT.md), and the run's own measure of its serial
+# part (bench/speed_serial.csv).
 #   scripts/bench_speed.sh [--scaling] [--repeats N]
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
@@ -45,5 +46,12 @@ if [ $scaling -eq 1 ]; then
   run "$inputs/bunny_loop1.ply" bunny_loop1 "$alternated"
   run "$inputs/bunny_loop4.ply" bunny_loop4 ours,ours-t2,meshopt
 fi
-python3 "$top/bench/speed_report.py" "$csv" "$top/bench/SPEED.md"
+# The run's own account of its serial part (one thread): time outside the loops spread over
+# the threads, the base of the projection to more cores.
+serial=$top/bench/speed_serial.csv
+echo "mesh,seconds,parallel_seconds,serial_fraction" >"$serial"
+for l in 2 3; do
+  echo "bunny_loop$l,$("$bench" --serial "$inputs/bunny_loop$l.ply" 0.1 1 | tr ' ' ,)" >>"$serial"
+done
+python3 "$top/bench/speed_report.py" "$csv" "$top/bench/SPEED.md" "$serial"
 echo "wrote $csv and bench/SPEED.md" >&2

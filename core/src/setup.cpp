@@ -94,7 +94,7 @@ void Simplifier::prepare() {
   const size_t n = mesh_.vertex_count();
   rep_.dropped_degenerate_faces = drop_repeated_corner_faces(mesh_.triangles, face_source_);
   // Inside, vertices and faces go in spatial order (compact() restores the input's).
-  order_ = spatial_order(mesh_.positions, mesh_.triangles);
+  order_ = spatial_order(mesh_.positions, mesh_.triangles, &workers_);
   {
     std::vector<uint32_t> source(face_source_.size());
     for (size_t f = 0; f < source.size(); ++f)

@@ -3,6 +3,7 @@
 // step lives); this file only sequences them.
 #include "simplifier.h"
 
+#include <chrono>
 #include <limits>
 
 #include "bucket_queue.h"
@@ -172,6 +173,7 @@ Report simplify(Mesh& mesh, const Options& options) {
     return rep;
   }
 
+  const auto start = std::chrono::steady_clock::now();
   Simplifier s(mesh, options, rep);
   s.prepare();
   if (!s.run_parts()) {
@@ -186,6 +188,8 @@ Report simplify(Mesh& mesh, const Options& options) {
   if (rep.stop == StopReason::NoCandidates || rep.stop == StopReason::ErrorBound)
     rep.stop_detail = s.explain_stop();
   s.compact();
+  rep.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  rep.parallel_seconds = s.parallel_seconds();
   rep.ok = true;
   rep.target_reached = rep.stop == StopReason::TargetReached || rep.stop == StopReason::MaxFactor ||
                        rep.stop == StopReason::LastInterval || rep.stop == StopReason::ErrorBound;

@@ -51,6 +51,7 @@ class Simplifier {
   bool run_parts();                              // parts.cpp
   template <class Queue> void run(Queue& queue); // simplifier.cpp
   void compact();                                // output.cpp
+  double parallel_seconds() const { return workers_.parallel_seconds(); }
   // Why the remaining vertices stay, when the target was not met (Report::stop_detail).
   std::string explain_stop() const; // stop_explanation.cpp
 

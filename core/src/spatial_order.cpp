@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <functional>
 #include <limits>
 
 namespace vrs {
@@ -19,9 +20,22 @@ uint64_t spread3(uint64_t x) {
   return x;
 }
 
+// Calls fn(begin, end) over [0, n) in blocks, on the workers when given.
+constexpr size_t kBlock = 65536;
+void blocks(Workers* w, size_t n, const std::function<void(size_t, size_t)>& fn) {
+  const size_t count = (n + kBlock - 1) / kBlock;
+  auto one = [&](size_t b) { fn(b * kBlock, std::min(n, (b + 1) * kBlock)); };
+  if (w)
+    w->for_each(count, one, 1);
+  else
+    for (size_t b = 0; b < count; ++b)
+      one(b);
+}
+
 } // namespace
 
-SpatialOrder spatial_order(std::vector<float>& positions, std::vector<uint32_t>& triangles) {
+SpatialOrder spatial_order(std::vector<float>& positions, std::vector<uint32_t>& triangles,
+                           Workers* workers) {
   const size_t n = positions.size() / 3, faces = triangles.size() / 3;
   float lo[3], hi[3];
   for (int a = 0; a < 3; ++a)
@@ -38,36 +52,58 @@ SpatialOrder spatial_order(std::vector<float>& positions, std::vector<uint32_t>&
 
   // (code, input index) pairs: sorting them orders ties by index, so the result is unique.
   std::vector<std::pair<uint64_t, uint32_t>> keys(n);
-  for (size_t v = 0; v < n; ++v) {
-    const float* p = &positions[3 * v];
-    uint64_t code = std::numeric_limits<uint64_t>::max();
-    if (std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])) {
-      code = 0;
-      for (int a = 0; a < 3; ++a)
-        code |= spread3(uint64_t((double(p[a]) - lo[a]) * scale[a])) << a;
+  blocks(workers, n, [&](size_t begin, size_t end) {
+    for (size_t v = begin; v < end; ++v) {
+      const float* p = &positions[3 * v];
+      uint64_t code = std::numeric_limits<uint64_t>::max();
+      if (std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2])) {
+        code = 0;
+        for (int a = 0; a < 3; ++a)
+          code |= spread3(uint64_t((double(p[a]) - lo[a]) * scale[a])) << a;
+      }
+      keys[v] = {code, uint32_t(v)};
     }
-    keys[v] = {code, uint32_t(v)};
+    // Each block sorted on its own, then merged in pairs (the keys are unique: one order).
+    std::sort(keys.begin() + begin, keys.begin() + end);
+  });
+  for (size_t width = kBlock; width < n; width *= 2) {
+    const size_t pairs = (n + 2 * width - 1) / (2 * width);
+    auto merge = [&](size_t i) {
+      const size_t begin = 2 * width * i, mid = std::min(n, begin + width),
+                   end = std::min(n, begin + 2 * width);
+      std::inplace_merge(keys.begin() + begin, keys.begin() + mid, keys.begin() + end);
+    };
+    if (workers)
+      workers->for_each(pairs, merge, 1);
+    else
+      for (size_t i = 0; i < pairs; ++i)
+        merge(i);
   }
-  std::sort(keys.begin(), keys.end());
 
   SpatialOrder order;
   order.vertex_old.resize(n);
   order.vertex_new.resize(n);
-  for (size_t i = 0; i < n; ++i) {
-    order.vertex_old[i] = keys[i].second;
-    order.vertex_new[keys[i].second] = uint32_t(i);
-  }
+  blocks(workers, n, [&](size_t begin, size_t end) {
+    for (size_t i = begin; i < end; ++i) {
+      order.vertex_old[i] = keys[i].second;
+      order.vertex_new[keys[i].second] = uint32_t(i);
+    }
+  });
   std::vector<std::pair<uint64_t, uint32_t>>().swap(keys);
   {
     std::vector<float> moved(positions.size());
-    for (size_t i = 0; i < n; ++i)
-      std::copy_n(&positions[3 * size_t(order.vertex_old[i])], 3, &moved[3 * i]);
+    blocks(workers, n, [&](size_t begin, size_t end) {
+      for (size_t i = begin; i < end; ++i)
+        std::copy_n(&positions[3 * size_t(order.vertex_old[i])], 3, &moved[3 * i]);
+    });
     std::copy(moved.begin(), moved.end(), positions.begin()); // same buffer: callers hold it
   }
 
   // Faces: counting sort by their lowest new corner (stable, linear).
-  for (uint32_t& c : triangles)
-    c = order.vertex_new[c];
+  blocks(workers, triangles.size(), [&](size_t begin, size_t end) {
+    for (size_t i = begin; i < end; ++i)
+      triangles[i] = order.vertex_new[triangles[i]];
+  });
   std::vector<uint32_t> start(n + 1, 0);
   for (size_t f = 0; f < faces; ++f)
     ++start[1 + std::min({triangles[3 * f], triangles[3 * f + 1], triangles[3 * f + 2]})];
@@ -79,8 +115,10 @@ SpatialOrder spatial_order(std::vector<float>& positions, std::vector<uint32_t>&
         {triangles[3 * f], triangles[3 * f + 1], triangles[3 * f + 2]})]++] = uint32_t(f);
   std::vector<uint32_t>().swap(start);
   std::vector<uint32_t> moved(triangles.size());
-  for (size_t f = 0; f < faces; ++f)
-    std::copy_n(&triangles[3 * size_t(order.face_old[f])], 3, &moved[3 * f]);
+  blocks(workers, faces, [&](size_t begin, size_t end) {
+    for (size_t f = begin; f < end; ++f)
+      std::copy_n(&triangles[3 * size_t(order.face_old[f])], 3, &moved[3 * f]);
+  });
   std::copy(moved.begin(), moved.end(), triangles.begin());
   return order;
 }

@@ -6,6 +6,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "workers.h"
+
 namespace vrs {
 
 struct SpatialOrder {
@@ -16,7 +18,9 @@ struct SpatialOrder {
 
 // Renumbers `positions` (3 a vertex) and `triangles` in place (same buffers): vertices by the
 // Morton code of their position in the bounding box of the finite ones (non-finite ones last, ties
-// by index), faces by their lowest new corner (stable). Returns the permutations.
-SpatialOrder spatial_order(std::vector<float>& positions, std::vector<uint32_t>& triangles);
+// by index), faces by their lowest new corner (stable). Returns the permutations. The codes,
+// the sort and the moves run on `workers` when given (the same result: the keys are unique).
+SpatialOrder spatial_order(std::vector<float>& positions, std::vector<uint32_t>& triangles,
+                           Workers* workers = nullptr);
 
 } // namespace vrs

@@ -79,6 +79,13 @@ void Workers::serve() {
 
 void Workers::for_each(size_t n, const std::function<void(size_t)>& fn, size_t grain) {
   if (n == 0) return;
+  const auto start = std::chrono::steady_clock::now();
+  spread(n, fn, grain);
+  parallel_seconds_ +=
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+}
+
+void Workers::spread(size_t n, const std::function<void(size_t)>& fn, size_t grain) {
   if (pool_.empty() || n <= grain) { // not worth waking anyone
     for (size_t i = 0; i < n; ++i)
       fn(i);

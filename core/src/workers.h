@@ -26,6 +26,9 @@ class Workers {
   // Calls fn(i) for every i in [0, n) and returns when all calls are done. Items are handed
   // out `grain` at a time to whichever thread is free.
   void for_each(size_t n, const std::function<void(size_t)>& fn, size_t grain = 4);
+  // Wall time spent in for_each so far: the work spread over the threads (the rest of a run
+  // is its serial part, the base of Amdahl's projection in bench/SPEED.md).
+  double parallel_seconds() const { return parallel_seconds_; }
 
  private:
   void serve();
@@ -43,6 +46,8 @@ class Workers {
   std::atomic<size_t> generation_{0}; // one more per loop handed out
   std::atomic<int> busy_{0};          // threads of the pool still in the current loop
   std::atomic<bool> quit_{false};
+  double parallel_seconds_ = 0;
+  void spread(size_t n, const std::function<void(size_t)>& fn, size_t grain);
 };
 
 // The number of threads Options::threads = 0 stands for: the machine's hardware threads.

@@ -208,6 +208,9 @@ struct Report {
   size_t input_vertices = 0, input_faces = 0;
   size_t vertices = 0, faces = 0; // output (vertices: referenced ones, plus unreferenced inputs)
   size_t removed = 0;             // vertices removed
+  // Wall time of the run, and the part of it spent in loops spread over the threads (the
+  // rest ran on one thread whatever Options::threads: Amdahl's serial part).
+  double seconds = 0, parallel_seconds = 0;
   size_t rejected[RejectCount] = {};
   size_t rejected_total() const;
 
