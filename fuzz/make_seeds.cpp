@@ -18,17 +18,20 @@ int main(int argc, char** argv) {
     uint8_t f0, f1;
     uint32_t param;
   };
-  // f0: target kind | mode << 3 | heap 0x20 | log 0x40 | boundary 0x80;
+  // f0: target kind (5-7: 0-2 in parts of 64 vertices) | mode << 3 | heap 0x20 | log 0x40 |
+  // boundary 0x80;
   // f1: factor 1 | raw 2 | locks 4 | cancel 8 | constrained edges 32 | feature angle 64 |
   // projection fill only 128.
   const Variant variants[] = {
-      {2, 0, 0x19999999u},         // ratio 10 %, local error
-      {2 | 0x80, 1, 0x028f5c28u},  // ratio 1 %, boundary too, paper's factor
-      {4 | 0x40, 0, 0},            // auto, log mapping
-      {0 | 0x20, 4, 40},           // faces, heap, locks
-      {3 | (1 << 3), 8, 500},      // max factor, terrain, cancel
-      {2, 32, 0x19999999u},        // ratio 10 %, seams, corner sources
-      {2 | 0x80, 64, 0x0000002du}, // ratio ~0 %, boundary too, 45 degree creases
+      {2, 0, 0x19999999u},             // ratio 10 %, local error
+      {2 | 0x80, 1, 0x028f5c28u},      // ratio 1 %, boundary too, paper's factor
+      {4 | 0x40, 0, 0},                // auto, log mapping
+      {0 | 0x20, 4, 40},               // faces, heap, locks
+      {3 | (1 << 3), 8, 500},          // max factor, terrain, cancel
+      {2, 32, 0x19999999u},            // ratio 10 %, seams, corner sources
+      {2 | 0x80, 64, 0x0000002du},     // ratio ~0 %, boundary too, 45 degree creases
+      {7, 0, 0x19999999u},             // ratio 10 %, in parts
+      {7 | 0x80, 32 | 4, 0x028f5c28u}, // ratio 1 %, in parts, boundary, seams, locks
   };
   int written = 0;
   for (int i = 2; i < argc; ++i) {
