@@ -16,12 +16,7 @@ while [ $# -gt 0 ]; do
   *) echo "unknown option $1" >&2; exit 2 ;;
   esac
 done
-"$top/scripts/setup.sh"
-"$top/scripts/build.sh" >/dev/null
-bench=$top/build/bin/vrs_bench
-data=$top/third_party/cgal-data/data/meshes
-inputs=$top/third_party/bench-inputs
-mkdir -p "$inputs"
+. "$top/scripts/lib/bench_setup.sh"
 csv=$top/bench/parts.csv
 first=--header
 : >"$csv"
