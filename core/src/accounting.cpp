@@ -80,14 +80,7 @@ template <class Queue> void Simplifier::reprice(Queue& queue) {
   // A vertex is next to at most one removal of a batch, so the list has no repeats, and each
   // price reads only the vertex's own ring.
   repriced_.resize(reprice_.size());
-  const uint32_t* tris = mesh_.triangles.data();
-  workers_.for_each(reprice_.size(), [&](size_t i) {
-    const uint32_t u = reprice_[i];
-    Ring r;
-    VertexKind kind = topo_.ring(u, tris, opt_.max_valence, r);
-    repriced_[i] =
-        removable(kind) ? evaluate(u, r) : Priced{std::numeric_limits<double>::infinity()};
-  });
+  workers_.for_each(reprice_.size(), [&](size_t i) { repriced_[i] = price_now(reprice_[i]); });
   const bool by_factor = opt_.target.kind == TargetKind::MaxFactor;
   for (size_t i = 0; i < reprice_.size(); ++i) {
     const uint32_t u = reprice_[i];

@@ -81,11 +81,7 @@ size_t orient_coherently(std::vector<uint32_t>& tris, const Topology& topo, cons
         }
       }
   };
-  if (workers)
-    workers->for_each(blocks, look, 1);
-  else
-    for (size_t b = 0; b < blocks; ++b)
-      look(b);
+  for_each_on(workers, blocks, look);
   if (std::find(incoherent.begin(), incoherent.end(), 1) == incoherent.end()) return 0;
   bool same = false;
 

@@ -118,7 +118,6 @@ bool Simplifier::by_parts() const {
 void Simplifier::run_part(Part& part, double threshold, size_t cap, const uint8_t* frozen) {
   auto owned = std::make_unique<Planned>(); // kilobytes: not on a worker's stack
   Planned& p = *owned;
-  const uint32_t* tris = mesh_.triangles.data();
   constexpr float kInf = std::numeric_limits<float>::infinity();
   for (size_t done = 0; done < cap && !part.queue.empty() && !part.full;) {
     const uint32_t v = part.queue.front();
@@ -171,10 +170,7 @@ void Simplifier::run_part(Part& part, double threshold, size_t cap, const uint8_
     for (int i = 0; i < p.overflows; ++i)
       topo_.add_face(p.overflow[i].first, p.overflow[i].second, part.arena);
     for (uint32_t u : part.reprice) {
-      Ring r;
-      const VertexKind kind = topo_.ring(u, tris, opt_.max_valence, r);
-      const Priced priced =
-          removable(kind) ? evaluate(u, r) : Priced{std::numeric_limits<double>::infinity()};
+      const Priced priced = price_now(u);
       if (priced.planned) {
         part.flip_refused += refuse(u, priced.why);
         if (priced.why != RejectCount) ++part.rejected[priced.why];
@@ -289,13 +285,7 @@ void Simplifier::price_frozen(const Parts& parts) {
     if (parts.frozen[v] && flags_[v] & kFlagStale && !(flags_[v] & kFlagRemoved))
       stale.push_back(v);
   std::vector<Priced> priced(stale.size());
-  const uint32_t* tris = mesh_.triangles.data();
-  workers_.for_each(stale.size(), [&](size_t i) {
-    Ring r;
-    const VertexKind kind = topo_.ring(stale[i], tris, opt_.max_valence, r);
-    priced[i] =
-        removable(kind) ? evaluate(stale[i], r) : Priced{std::numeric_limits<double>::infinity()};
-  });
+  workers_.for_each(stale.size(), [&](size_t i) { priced[i] = price_now(stale[i]); });
   for (size_t i = 0; i < stale.size(); ++i) {
     note(stale[i], priced[i]);
     factor_[stale[i]] = static_cast<float>(priced[i].priority);

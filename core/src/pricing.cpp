@@ -42,6 +42,12 @@ Simplifier::Priced Simplifier::evaluate(uint32_t v, const Ring& ring) const {
   return {std::max(cost, chord), RejectCount, true};
 }
 
+Simplifier::Priced Simplifier::price_now(uint32_t v) const {
+  Ring ring;
+  const VertexKind kind = topo_.ring(v, mesh_.triangles.data(), opt_.max_valence, ring);
+  return removable(kind) ? evaluate(v, ring) : Priced{std::numeric_limits<double>::infinity()};
+}
+
 void Simplifier::note(uint32_t v, const Priced& p) {
   if (!p.planned) return;
   set_refused(v, p.why);

@@ -84,6 +84,8 @@ class Simplifier {
     bool planned = false;
   };
   Priced evaluate(uint32_t v, const Ring& ring) const;
+  // evaluate() on v's ring as it is now; +inf when v is no longer removable.
+  Priced price_now(uint32_t v) const;
   void note(uint32_t v, const Priced& p);
   // Plans v's removal on its evaluated plane, then on a fallback direction; RejectCount = ok,
   // with the chosen patch's local error in `cost`.

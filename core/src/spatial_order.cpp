@@ -23,13 +23,8 @@ uint64_t spread3(uint64_t x) {
 // Calls fn(begin, end) over [0, n) in blocks, on the workers when given.
 constexpr size_t kBlock = 65536;
 void blocks(Workers* w, size_t n, const std::function<void(size_t, size_t)>& fn) {
-  const size_t count = (n + kBlock - 1) / kBlock;
-  auto one = [&](size_t b) { fn(b * kBlock, std::min(n, (b + 1) * kBlock)); };
-  if (w)
-    w->for_each(count, one, 1);
-  else
-    for (size_t b = 0; b < count; ++b)
-      one(b);
+  for_each_on(w, (n + kBlock - 1) / kBlock,
+              [&](size_t b) { fn(b * kBlock, std::min(n, (b + 1) * kBlock)); });
 }
 
 } // namespace
@@ -73,11 +68,7 @@ SpatialOrder spatial_order(std::vector<float>& positions, std::vector<uint32_t>&
                    end = std::min(n, begin + 2 * width);
       std::inplace_merge(keys.begin() + begin, keys.begin() + mid, keys.begin() + end);
     };
-    if (workers)
-      workers->for_each(pairs, merge, 1);
-    else
-      for (size_t i = 0; i < pairs; ++i)
-        merge(i);
+    for_each_on(workers, pairs, merge);
   }
 
   SpatialOrder order;

@@ -26,6 +26,15 @@ inline void relax_cpu(int& polls) {
 
 } // namespace
 
+void for_each_on(Workers* workers, size_t n, const std::function<void(size_t)>& fn, size_t grain) {
+  if (workers) {
+    workers->for_each(n, fn, grain);
+    return;
+  }
+  for (size_t i = 0; i < n; ++i)
+    fn(i);
+}
+
 int hardware_threads() {
   return std::max(1, int(std::thread::hardware_concurrency()));
 }

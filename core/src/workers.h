@@ -50,6 +50,11 @@ class Workers {
   void spread(size_t n, const std::function<void(size_t)>& fn, size_t grain);
 };
 
+// workers->for_each(n, fn, grain) when given, else every fn(i) on the caller (set-up steps
+// that also run without a pool).
+void for_each_on(Workers* workers, size_t n, const std::function<void(size_t)>& fn,
+                 size_t grain = 1);
+
 // The number of threads Options::threads = 0 stands for: the machine's hardware threads.
 int hardware_threads();
 
