@@ -51,6 +51,7 @@ class Topology {
   void build(const std::vector<uint32_t>& triangles, size_t vertex_count);
 
   uint32_t valence(uint32_t v) const { return count_[v]; } // number of incident triangles
+  size_t vertex_count() const { return count_.size(); }
   const uint32_t* faces_of(uint32_t v) const { return pool_.data() + first_[v]; }
 
   void add_face(uint32_t v, uint32_t face);

@@ -29,7 +29,8 @@ void triangulate_fan(const Vec2*, const Vec3* q, Vec3 n, int k, Patch& out) {
   double best_worst = -1;
   for (int a = 0; a < k; ++a) {
     double worst = 1;
-    for (int i = 1; i + 1 < k; ++i)
+    // A fan no better than the best so far cannot win: its worst triangle only falls.
+    for (int i = 1; i + 1 < k && worst > best_worst; ++i)
       worst = std::min(worst, triangle_score(q[a], q[(a + i) % k], q[(a + i + 1) % k], n));
     if (worst > best_worst) {
       best_worst = worst;

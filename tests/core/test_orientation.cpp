@@ -139,3 +139,18 @@ TEST(Orientation, APieceMeetingADuplicatedFaceIsTurnedTheWayThatRepeatsNoMoreEdg
   orient(m, flipped);
   EXPECT_LT(vrs_test::count_duplicate_directed_edges(m), before);
 }
+
+TEST(Orientation, AnEdgeBothFacesWalkFromItsHigherToItsLowerVertexIsFound) {
+  // Two triangles on the edge (0, 1), both walking it 1 -> 0, then both 0 -> 1: incoherent
+  // either way, whichever way round the vertices are numbered (the first look once only
+  // asked the faces that walk an edge from its lower vertex).
+  for (bool down : {true, false}) {
+    Mesh m;
+    m.positions = {0, 0, 0, 1, 0, 0, 0.5f, 1, 0, 0.5f, -1, 0};
+    m.triangles =
+        down ? std::vector<uint32_t>{1, 0, 2, 1, 0, 3} : std::vector<uint32_t>{0, 1, 2, 0, 1, 3};
+    std::vector<uint8_t> flipped;
+    EXPECT_EQ(orient(m, flipped), 1u) << down;
+    EXPECT_EQ(vrs_test::count_duplicate_directed_edges(m), 0u) << down;
+  }
+}
