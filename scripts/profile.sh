@@ -35,7 +35,11 @@ def rows(path):  # (percent, function name without arguments)
             yield float(m.group(1)), re.sub(r"\(.*", "", sym)
 steps = [  # (label, name prefix): the driver's steps, then the planning's pieces
     ("setup: classify and first prices (`Simplifier::prepare`)", "vrs::Simplifier::prepare"),
-    ("planning the popped batches (`plan_batch`)", "vrs::Simplifier::plan_batch"),
+    ("the parts' rounds (`run_parts`)", "vrs::Simplifier::run_parts"),
+    ("one part's queue in a round (`run_part`)", "vrs::Simplifier::run_part"),
+    ("frozen vertices priced after a cut (`price_frozen`)", "vrs::Simplifier::price_frozen"),
+    ("the whole queue, the last removals (`run`)", "vrs::Simplifier::run"),
+    ("its popped batches planned (`plan_batch`)", "vrs::Simplifier::plan_batch"),
     ("faces rewritten (`rewrite`)", "vrs::Simplifier::rewrite"),
     ("accounting (`account`, serial)", "vrs::Simplifier::account"),
     ("neighbours priced again (`reprice`)", "vrs::Simplifier::reprice"),
