@@ -67,6 +67,7 @@ bool run_method(const std::string& method, const vrs::Mesh& in, size_t target,
     PeerResult ours;
     vrs::Options o;
     o.threads = 1;
+    o.split_vertices = vrs::SplitVertices::Weld; // as "ours"
     ours = run_ours(in, target, o);
     r = run_qecd(in, ours.mesh.face_count());
   } else if (method == "openmesh")
@@ -79,6 +80,9 @@ bool run_method(const std::string& method, const vrs::Mesh& in, size_t target,
     // "ours" then any of -factor|-local, -linear|-log, -heap, -whole, -intN, e.g. ours-local-heap.
     vrs::Options o;
     o.threads = 1; // one thread unless -tN: the peers run on one
+    // The benchmark's meshes are positions only: split copies are interchangeable, as the
+    // command-line tool judges them (-seam / -keep: the other ways).
+    o.split_vertices = vrs::SplitVertices::Weld;
     std::stringstream parts(method.substr(4));
     std::string p;
     while (std::getline(parts, p, '-')) {
@@ -112,6 +116,10 @@ bool run_method(const std::string& method, const vrs::Mesh& in, size_t target,
         o.against_input = false;
       else if (p == "heap")
         o.queue = vrs::QueueKind::Heap;
+      else if (p == "seam")
+        o.split_vertices = vrs::SplitVertices::Seam;
+      else if (p == "keep")
+        o.split_vertices = vrs::SplitVertices::Keep;
       else if (p == "whole") // one queue from the start, no parts
         o.part_vertices = 0;
       else if (p.rfind("part", 0) == 0 && p.size() > 4) // e.g. ours-part1024
@@ -200,6 +208,7 @@ int bound(int argc, char** argv) {
       if (pid == 0) {
         vrs::Options o;
         o.threads = 1;
+        o.split_vertices = vrs::SplitVertices::Weld; // positions only, as "ours"
         const std::string m = method;
         vrs_bench::PeerResult r = m == "ours"      ? vrs_bench::run_ours_bound(in, e, o)
                                   : m == "meshopt" ? vrs_bench::run_meshopt_bound(in, e)

@@ -6,6 +6,7 @@
 #include <cstdio>
 #include <cstdlib>
 #include <cstring>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -57,6 +58,11 @@ const char* kUsage =
     "                                  the kept border alone would take more than a quarter\n"
     "                                  of the faces asked for)\n"
     "  --keep-boundary                 keep every boundary vertex whatever the target\n"
+    "  --split-vertices seam|weld|keep vertices written twice at one position along a\n"
+    "                                  seam: welded for the run, each side keeping its own\n"
+    "                                  copies (seam), welded freely (weld: the default when\n"
+    "                                  vertices hold nothing but a position), or left apart\n"
+    "                                  as borders (keep)\n"
     "  --max-jump X                    stop short of a count target rather than take a\n"
     "                                  removal costing X times the dearest so far (default\n"
     "                                  10; 0: the target at any cost)\n"
@@ -146,13 +152,13 @@ void print_json(const vrs::Report& r, double seconds_simplify, double seconds_to
       "\"locked\":%zu,\"high_valence\":%zu,\"constrained\":%zu},"
       "\"constrained_edges\":%zu,\"input_issues\":{\"degenerate_faces\":%zu,"
       "\"nonfinite_vertices\":%zu,\"unreferenced_vertices\":%zu,"
-      "\"reoriented_faces\":%zu},"
+      "\"reoriented_faces\":%zu,\"welded_vertices\":%zu},"
       "\"relaxed_removals\":%zu,\"boundary_simplified\":%s,\"stop_detail\":\"%s\","
       "\"message\":\"%s\"",
       r.rejected_total(), vrs::stop_reason_name(r.stop), r.target_reached ? "true" : "false",
       r.max_removed_factor, r.kept_boundary, r.kept_nonmanifold, r.kept_locked, r.kept_high_valence,
       r.kept_constrained, r.constrained_edges, r.dropped_degenerate_faces, r.nonfinite_vertices,
-      r.unreferenced_vertices, r.reoriented_faces, r.relaxed_removals,
+      r.unreferenced_vertices, r.reoriented_faces, r.welded_vertices, r.relaxed_removals,
       r.boundary_simplified ? "true" : "false", vrs_common::json_text(r.stop_detail).c_str(),
       vrs_common::json_text(r.message).c_str());
   // A bound that was not tracked is absent, never 0 (which would read "no error at all").
@@ -182,6 +188,10 @@ void print_text(const vrs::Report& r, double seconds_simplify, double seconds_to
     std::printf("bound:   %.6g (%.6g %% of the diagonal): no point of the output is farther "
                 "from the input, nor of the input from the output (certified)\n",
                 r.error_bound, diag > 0 ? 100.0 * r.error_bound / diag : 0.0);
+  if (r.welded_vertices)
+    std::printf("split:   %zu vertices written twice at one position welded for the run, each "
+                "face keeping its own copy (--split-vertices)\n",
+                r.welded_vertices);
   if (r.boundary_simplified)
     std::printf("border:  simplified too: kept, it alone would take more than a quarter of the "
                 "faces asked for (--keep-boundary keeps it)\n");
@@ -200,6 +210,7 @@ int main(int argc, char** argv) {
   std::string in, out;
   vrs::Options opt;
   bool json = false, ascii = false;
+  std::optional<vrs::SplitVertices> split; // --split-vertices, else chosen from the vertices' data
   // `vrsimplify serve OUT.glb`: the viewer page lives in the Python package (vrsimplify.serve).
   if (argc >= 2 && std::strcmp(argv[1], "serve") == 0)
     return vrs_tool::exec_python_module("vrsimplify.serve", {argv + 2, argv + argc}, "serve",
@@ -237,9 +248,10 @@ int main(int argc, char** argv) {
     };
     const char* v = nullptr;
     // Options a tiled run does not honour yet: it refuses them by name (never ignores them).
-    for (const char* o : {"--ascii", "--simplify-boundary", "--keep-boundary", "--max-jump",
-                          "--error-bound", "--mode", "--queue", "--fill", "--priority", "--mapping",
-                          "--feature-angle", "--reprice", "--intervals", "--threads"})
+    for (const char* o :
+         {"--ascii", "--simplify-boundary", "--keep-boundary", "--max-jump", "--error-bound",
+          "--mode", "--queue", "--fill", "--priority", "--mapping", "--feature-angle", "--reprice",
+          "--intervals", "--threads", "--split-vertices"})
       if (a == o && not_tiled.empty()) not_tiled = a;
     if (a == "--help" || a == "-h") {
       std::printf("%s", kUsage);
@@ -261,6 +273,14 @@ int main(int argc, char** argv) {
       opt.simplify_boundary = true;
     } else if (a == "--keep-boundary") {
       opt.simplify_boundary_when_needed = false;
+    } else if (a == "--split-vertices") {
+      const std::string m = (v = value()) ? v : "";
+      if (m == "seam" || m == "weld" || m == "keep")
+        split = m == "seam"   ? vrs::SplitVertices::Seam
+                : m == "weld" ? vrs::SplitVertices::Weld
+                              : vrs::SplitVertices::Keep;
+      else
+        return usage_error("--split-vertices needs seam, weld or keep");
     } else if (a == "--max-jump") {
       if (!(v = value()) || !parse_double(v, opt.max_price_jump) || opt.max_price_jump < 0)
         return usage_error("--max-jump needs a number >= 0");
@@ -462,6 +482,10 @@ int main(int argc, char** argv) {
   const std::vector<uint32_t> seams = vrs_tool::seams(*loaded.doc, mesh);
   opt.constrained_edges = &seams;
   opt.corner_sources = vrs_tool::has_corner_data(*loaded.doc);
+  // Copies that hold nothing but a position are interchangeable: no seam to keep.
+  opt.split_vertices = split                                        ? *split
+                       : vrs_tool::has_vertex_data(*loaded.doc, in) ? vrs::SplitVertices::Seam
+                                                                    : vrs::SplitVertices::Weld;
   const bool terminal = isatty(STDERR_FILENO);
   vrs_tool::ProgressBar bar(progress == 1 || (progress == -1 && terminal), terminal);
   opt.progress = [&bar](float f) { return bar.update(f); };

@@ -124,6 +124,28 @@ bool has_corner_data(const VcgDocument& doc) {
   return doc.corner_data().any();
 }
 
+bool has_vertex_data(const VcgDocument& doc, const std::string& path) {
+  using Mask = vcg::tri::io::Mask;
+  if (doc.mask & (Mask::IOM_VERTNORMAL | Mask::IOM_VERTCOLOR | Mask::IOM_VERTQUALITY |
+                  Mask::IOM_VERTTEXCOORD | Mask::IOM_VERTRADIUS))
+    return true;
+  // A PLY's vertex element may hold properties vcglib does not read (kept by ExactVertices).
+  std::ifstream f(path, std::ios::binary);
+  std::string line;
+  if (!std::getline(f, line) || line.rfind("ply", 0) != 0) return false;
+  bool in_vertex = false;
+  while (std::getline(f, line) && line.rfind("end_header", 0) != 0) {
+    std::istringstream words(line);
+    std::string kind, a, b, c;
+    words >> kind >> a >> b >> c;
+    if (kind == "element") in_vertex = a == "vertex";
+    if (kind != "property" || !in_vertex) continue;
+    const std::string& name = a == "list" ? c : b;
+    if (name != "x" && name != "y" && name != "z") return true;
+  }
+  return false;
+}
+
 std::vector<uint32_t> seams(const VcgDocument& doc, const vrs::Mesh& core) {
   const VcgMesh& m = doc.mesh;
   std::vector<size_t> faces;

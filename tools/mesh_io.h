@@ -25,6 +25,10 @@ vrs::Mesh to_core(const VcgDocument& doc);
 // True when the document holds per-corner data (texture coordinates, normals) or face colors,
 // which then follow the simplification (ask the core for corner sources).
 bool has_corner_data(const VcgDocument& doc);
+// True when the vertices hold more than a position (normals, colors, texture coordinates,
+// quality, or a PLY vertex property of any other name): copies of one position may then
+// differ, and a seam written as split vertices keeps each side's.
+bool has_vertex_data(const VcgDocument& doc, const std::string& path);
 // Per-corner normals turning more than this make a hard edge (default vrs_vcg::kNormalCreaseDeg).
 void set_feature_angle(VcgDocument& doc, double degrees);
 // Edges across which that data differs (seams), as core vertex pairs: the core keeps them.

@@ -44,8 +44,14 @@ void write_output(Mesh& mesh, const SpatialOrder& order, const std::vector<uint8
     if (!corner_source.empty())
       rep.corner_source.insert(rep.corner_source.end(), &corner_source[3 * f],
                                &corner_source[3 * f] + 3);
-    for (int c = 0; c < 3; ++c)
-      out.push_back(out_index[tris[3 * f + c]]);
+    for (int c = 0; c < 3; ++c) {
+      uint32_t v = tris[3 * f + c];
+      if (!records.corners.empty()) { // welded: the copy the input corner had
+        const uint32_t own = records.corners[corner_source[3 * f + c]];
+        if (order.vertex_new[records.standing[own]] == v) v = order.vertex_new[own];
+      }
+      out.push_back(out_index[v]);
+    }
   }
   tris.swap(out);
   rep.faces = tris.size() / 3;
@@ -72,7 +78,12 @@ void Simplifier::compact() {
   std::vector<uint8_t> removed(flags_.size());
   for (size_t v = 0; v < flags_.size(); ++v)
     removed[v] = flags_[v] & kFlagRemoved;
-  write_output(mesh_, order_, removed, {face_source_, corner_source_, face_bound_}, rep_);
+  // A welded copy goes where the copy standing for it goes.
+  for (size_t i = 0; i < welding_.rep.size(); ++i)
+    removed[order_.vertex_new[i]] = removed[order_.vertex_new[welding_.rep[i]]];
+  write_output(mesh_, order_, removed,
+               {face_source_, corner_source_, face_bound_, welding_.corners, welding_.rep}, rep_);
+  if (!opt_.corner_sources) std::vector<uint32_t>().swap(rep_.corner_source);
 }
 
 } // namespace vrs

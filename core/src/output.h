@@ -17,6 +17,10 @@ struct SlotRecords {
   const std::vector<uint32_t>& face_source;
   const std::vector<uint32_t>& corner_source;
   const std::vector<float>& face_bound;
+  // Split vertices welded for the run (split_vertices.h; empty: none): each input corner's
+  // own copy, and the copy standing for each input vertex. Corners then need corner_source.
+  const std::vector<uint32_t>& corners;
+  const std::vector<uint32_t>& standing;
 };
 
 // Rewrites `mesh` (internal order, dead slots holding kNone) as its live part in the input's

@@ -6,6 +6,7 @@
 #include "local_error.h"
 #include "orientation.h"
 #include "simplifier.h"
+#include "split_vertices.h"
 
 namespace vrs {
 
@@ -92,6 +93,12 @@ void Simplifier::lock_split_seams() {
 
 void Simplifier::prepare() {
   const size_t n = mesh_.vertex_count();
+  // First: the faces' corners then name the copies that stand for the split ones.
+  if (opt_.split_vertices != SplitVertices::Keep) {
+    welding_ = weld_split_vertices(mesh_.triangles, mesh_.positions);
+    rep_.welded_vertices = welding_.welded;
+  }
+  auto standing = [&](uint32_t v) { return welding_.rep.empty() ? v : welding_.rep[v]; };
   rep_.dropped_degenerate_faces = drop_repeated_corner_faces(mesh_.triangles, face_source_);
   // Inside, vertices and faces go in spatial order (compact() restores the input's).
   order_ = spatial_order(mesh_.positions, mesh_.triangles, &workers_);
@@ -104,9 +111,9 @@ void Simplifier::prepare() {
   flags_.assign(n, 0);
   for (uint32_t v = 0; v < n; ++v)
     set_refused(v, RejectCount);
-  if (opt_.locked)
-    for (size_t v = 0; v < n; ++v)
-      if ((*opt_.locked)[order_.vertex_old[v]]) flags_[v] |= kFlagLocked;
+  if (opt_.locked) // a locked copy locks the copy standing for it
+    for (uint32_t i = 0; i < n; ++i)
+      if ((*opt_.locked)[i]) flags_[order_.vertex_new[standing(i)]] |= kFlagLocked;
   // A NaN/inf position poisons every plane it takes part in: lock it and its neighbours.
   const auto& t = mesh_.triangles;
   for (size_t v = 0; v < n; ++v)
@@ -130,12 +137,15 @@ void Simplifier::prepare() {
     if (opt_.constrained_edges) {
       pairs = *opt_.constrained_edges;
       for (uint32_t& v : pairs)
-        if (v < n) v = order_.vertex_new[v]; // out-of-range pairs stay ignored
-      renumbered.constrained_edges = &pairs;
+        if (v < n) v = order_.vertex_new[standing(v)]; // out-of-range pairs stay ignored
     }
+    if (opt_.split_vertices == SplitVertices::Seam) // each side keeps its copies
+      for (uint32_t v : welding_.seams)
+        pairs.push_back(order_.vertex_new[v]);
+    if (!pairs.empty()) renumbered.constrained_edges = &pairs;
     rep_.constrained_edges = constraints_.build(renumbered, mesh_.positions.data(), t, topo_, n);
   }
-  if (opt_.corner_sources) {
+  if (opt_.corner_sources || !welding_.rep.empty()) { // welded: output corners take copies
     corner_source_.resize(t.size());
     for (size_t f = 0; f < face_source_.size(); ++f)
       for (int c = 0; c < 3; ++c)
@@ -224,6 +234,7 @@ void Simplifier::prepare() {
     note(v, first[v]);
     factor_[v] = static_cast<float>(first[v].priority);
   }
+  rep_.unreferenced_vertices -= welding_.welded; // the welded copies: no face names them now
   // The input's faces, for the relaxed passes' fold-over check (last_resort.cpp), copied once
   // the first prices' scratch is gone (so that the copy does not raise the peak).
   std::vector<Priced>().swap(first);

@@ -17,6 +17,7 @@
 #include "removal.h"
 #include "scheduler.h"
 #include "spatial_order.h"
+#include "split_vertices.h"
 #include "topology.h"
 #include "vertex_flags.h"
 #include "vrs/simplify.h"
@@ -194,6 +195,7 @@ class Simplifier {
   InputSurface input_;                  // the input's faces, for fold-overs against it
   Constraints constraints_;
   SpatialOrder order_;
+  Welding welding_; // split vertices welded for the run (Options::split_vertices)
   size_t faces_ = 0, vertices_ = 0, target_faces_ = 0, target_vertices_ = 0;
   size_t faces0_ = 0;
   double reference_area_ = 1; // mean input triangle area (LocalError's weight)

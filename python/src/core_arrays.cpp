@@ -101,6 +101,7 @@ nb::dict report_dict(const vrs::Report& r, bool bounded, double seconds, double 
   input["nonfinite_vertices"] = r.nonfinite_vertices;
   input["unreferenced_vertices"] = r.unreferenced_vertices;
   input["reoriented_faces"] = r.reoriented_faces;
+  input["welded_vertices"] = r.welded_vertices;
   d["input_issues"] = input;
   d["relaxed_removals"] = r.relaxed_removals;
   d["boundary_simplified"] = r.boundary_simplified;

@@ -28,9 +28,18 @@ nb::tuple simplify(AnyArray vertices, AnyArray faces, const std::string& target_
                    double target_value, double max_error, const std::string& mode, int threads,
                    bool simplify_boundary, bool keep_boundary, double max_jump,
                    double feature_angle, std::optional<AnyArray> seams,
-                   std::optional<AnyArray> locked, nb::object progress) {
+                   std::optional<AnyArray> locked, nb::object progress,
+                   const std::string& split_vertices) {
   vrs::Options opt = make_options({target_kind, target_value}, max_error, mode, threads,
                                   simplify_boundary, keep_boundary, max_jump, feature_angle);
+  if (split_vertices == "seam")
+    opt.split_vertices = vrs::SplitVertices::Seam;
+  else if (split_vertices == "weld")
+    opt.split_vertices = vrs::SplitVertices::Weld;
+  else if (split_vertices == "keep")
+    opt.split_vertices = vrs::SplitVertices::Keep;
+  else
+    throw nb::value_error("split_vertices must be seam, weld or keep");
   vrs::Mesh mesh;
   mesh.positions = read_positions(vertices);
   const size_t n = mesh.vertex_count();
@@ -111,7 +120,7 @@ NB_MODULE(_core, m) {
         nb::arg("target_value"), nb::arg("max_error"), nb::arg("mode"), nb::arg("threads"),
         nb::arg("simplify_boundary"), nb::arg("keep_boundary"), nb::arg("max_jump"),
         nb::arg("feature_angle"), nb::arg("seams").none(), nb::arg("locked").none(),
-        nb::arg("progress").none());
+        nb::arg("progress").none(), nb::arg("split_vertices") = "seam");
   // The MeshLab filter hands pymeshlab its stop reason as a number (strings do not pass).
   m.def("stop_reason_name", [](int code) -> std::string {
     if (code < 0 || code > int(vrs::StopReason::ErrorBound))

@@ -203,6 +203,7 @@ def test_ctrl_c_raises_keyboard_interrupt_and_leaves_the_input(fandisk):
     (dict(max_error="abc%"), "max_error must be"),
     (dict(locked=[1, 0]), "boolean"),
     (dict(locked=np.zeros(3, bool)), "one entry per vertex"),
+    (dict(split_vertices="glue"), "split_vertices must be"),
 ])
 def test_bad_parameters_raise_value_error(sphere, kwargs, message):
     with pytest.raises(ValueError, match=message):
@@ -231,3 +232,46 @@ def test_bad_input(sphere):
     assert 5 in r.vertex_map
     empty = vrsimplify.simplify(np.zeros((0, 3)), np.zeros((0, 3), np.int64))
     assert len(empty.faces) == 0 and len(empty.vertices) == 0
+
+
+def split_sphere(sphere):
+    """The sphere with its upper faces on copies of the vertices they share with the lower."""
+    v, f = sphere
+    upper = v[f].mean(axis=1)[:, 2] > 0
+    shared = np.intersect1d(f[upper].ravel(), f[~upper].ravel())
+    copy = np.full(len(v), -1)
+    copy[shared] = len(v) + np.arange(len(shared))
+    f2 = f.copy()
+    f2[upper] = np.where(copy[f[upper]] >= 0, copy[f[upper]], f[upper])
+    side = np.zeros(len(v) + len(shared), int)
+    side[f2[upper].ravel()] = 1
+    return np.vstack([v, v[shared]]), f2, len(shared), side
+
+
+def test_split_vertices_are_welded_for_the_run_and_split_again(sphere):
+    v, f, copies, side = split_sphere(sphere)
+    r = vrsimplify.simplify(v, f, ratio=0.1)
+    assert r.report["input_issues"]["welded_vertices"] == copies
+    assert r.report["target_reached"]
+    assert np.array_equal(r.vertices, v[r.vertex_map])
+    assert np.array_equal(f.reshape(-1)[r.corner_source], r.vertex_map[r.faces])
+    # Each face on one side of the seam; by position, every edge is held by two faces.
+    s = side[r.vertex_map[r.faces]]
+    assert (s == s[:, :1]).all()
+    at = np.unique(r.vertices, axis=0, return_inverse=True)[1].reshape(-1)  # position ids
+    e = at[np.concatenate([r.faces[:, [0, 1]], r.faces[:, [1, 2]], r.faces[:, [2, 0]]])]
+    _, counts = np.unique(np.sort(e, axis=1), axis=0, return_counts=True)
+    assert (counts == 2).all(), "a crack along the seam"
+    kept = vrsimplify.simplify(v, f, ratio=0.1, split_vertices="keep")
+    assert kept.report["input_issues"]["welded_vertices"] == 0
+    assert np.isin(np.arange(len(sphere[0]), len(v)), kept.vertex_map).all()
+
+
+def test_a_soup_welds_freely_when_asked(sphere):
+    v, f = sphere
+    soup_v, soup_f = v[f.ravel()], np.arange(f.size).reshape(-1, 3)
+    r = vrsimplify.simplify(soup_v, soup_f, ratio=0.1, split_vertices="weld")
+    assert r.report["target_reached"]
+    assert r.report["input_issues"]["welded_vertices"] == len(soup_v) - len(v)
+    seam = vrsimplify.simplify(soup_v, soup_f, ratio=0.1)  # every face its own chart
+    assert len(seam.faces) == len(soup_f)

@@ -48,7 +48,7 @@ class Report(TypedDict):
     constrained_edges: int
     input_issues: dict[str, int]
     """degenerate_faces (dropped), nonfinite_vertices, unreferenced_vertices (kept),
-    reoriented_faces."""
+    reoriented_faces, welded_vertices (split copies welded for the run, see split_vertices)."""
     relaxed_removals: int
     boundary_simplified: bool
     max_removed_factor: float
@@ -137,7 +137,8 @@ def simplify(mesh_vertices, mesh_faces, /, *, ratio: Optional[float] = None,
              max_error: Union[float, str, None] = None, mode: str = "surface", threads: int = 0,
              simplify_boundary: bool = False, keep_boundary: bool = False, max_jump: float = 10.0,
              feature_angle: float = 0.0, seams=None, locked=None,
-             progress: Optional[Callable[[float], Optional[bool]]] = None) -> Result:
+             progress: Optional[Callable[[float], Optional[bool]]] = None,
+             split_vertices: str = "seam") -> Result:
     """Simplifies a triangle mesh by removing vertices; the input arrays are left untouched.
 
     mesh_vertices: (n, 3) float32 or float64; mesh_faces: (k, 3) int32 or int64 (any integer).
@@ -156,6 +157,10 @@ def simplify(mesh_vertices, mesh_faces, /, *, ratio: Optional[float] = None,
     feature_angle: keep edges whose faces turn more than this many degrees apart (0: off).
     seams: (s, 2) vertex pairs kept as polylines (texture seams, material borders).
     locked: boolean mask, one entry per vertex: those vertices stay.
+    split_vertices: vertices written twice at one position along a seam (two border edges at
+    the same two positions): "seam" welds them for the run and keeps each side's copies (their
+    own data stays exact), "weld" welds them freely (copies that hold nothing but a position),
+    "keep" leaves them apart as borders. report["input_issues"]["welded_vertices"] counts them.
     progress: called with the fraction done; returning False stops (a valid, partial result).
     Ctrl-C raises KeyboardInterrupt. Bad input or parameters raise ValueError.
     """
@@ -170,7 +175,7 @@ def simplify(mesh_vertices, mesh_faces, /, *, ratio: Optional[float] = None,
     out_faces, vertex_map, face_source, corner_source, report = _core.simplify(
         v, f, kind, value, _max_error(max_error, v), str(mode), int(threads),
         bool(simplify_boundary), bool(keep_boundary), float(max_jump), float(feature_angle), seams,
-        locked, progress)
+        locked, progress, str(split_vertices))
     return Result(vertices=v[vertex_map], faces=out_faces.astype(f.dtype, copy=False),
                   vertex_map=vertex_map, face_source=face_source, corner_source=corner_source,
                   report=report)

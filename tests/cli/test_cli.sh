@@ -265,6 +265,38 @@ for ext in off obj ply; do
     fail "NaN vertex in .$ext: $(cat "$out/nan.$ext.json" "$out/e")"
 done
 
+# 11. A seam written as split vertices (a 9 x 9 grid whose right half has its own copy of the
+#     middle column), positions only: welded for the run by default (JSON welded_vertices), the
+#     target reached; --split-vertices keep leaves the copies apart; a bad mode is refused.
+python3 - "$out/split.off" <<'PY'
+import math, sys
+n, half = 8, 4
+verts, faces = [], []
+def add(x0, x1):
+    base, w = len(verts), x1 - x0 + 1
+    for y in range(n + 1):
+        for x in range(x0, x1 + 1):
+            verts.append((x, y, 0.3 * math.sin(0.7 * x * y)))
+    for y in range(n):
+        for i in range(w - 1):
+            a = base + y * w + i
+            faces.extend([(a, a + 1, a + w + 1), (a, a + w + 1, a + w)])
+add(0, half)
+add(half, n)
+with open(sys.argv[1], "w") as f:
+    f.write(f"OFF\n{len(verts)} {len(faces)} 0\n")
+    f.writelines(f"{x} {y} {z}\n" for x, y, z in verts)
+    f.writelines(f"3 {a} {b} {c}\n" for a, b, c in faces)
+PY
+"$bin" "$out/split.off" "$out/split-out.off" --faces 40 --json >"$out/split.json" 2>"$out/e" &&
+  [ "$(json_num "$out/split.json" welded_vertices)" = 9 ] &&
+  grep -q '"target_reached":true' "$out/split.json" && ok ||
+  fail "split seam welded by default: $(cat "$out/split.json" "$out/e")"
+"$bin" "$out/split.off" "$out/split-keep.off" --faces 40 --split-vertices keep --json \
+  >"$out/split-keep.json" 2>"$out/e" && [ "$(json_num "$out/split-keep.json" welded_vertices)" = 0 ] &&
+  ok || fail "--split-vertices keep: $(cat "$out/split-keep.json" "$out/e")"
+expect_exit 2 "--split-vertices needs" "$bin" "$out/split.off" "$out/never.ply" --split-vertices glue
+
 # Outputs are written under a temporary name beside them and renamed once whole: after every
 # run above, written or refused, none is left.
 left=$(find "$out" -name '.vrsimplify-*')

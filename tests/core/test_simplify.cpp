@@ -172,8 +172,9 @@ TEST(Simplify, KeptBorderThatWouldTakeTheTargetIsSimplifiedToo) {
 }
 
 // A seam written as split vertices (two halves of a grid that share a column of positions but
-// not its vertices): when the border rule simplifies the border, that column stays on both
-// sides, so the halves still meet without a crack; the outer border is simplified.
+// not its vertices), left apart (SplitVertices::Keep): when the border rule simplifies the
+// border, that column stays on both sides, so the halves still meet without a crack; the outer
+// border is simplified. (By default the column is welded: test_split_vertices, and below.)
 TEST(Simplify, SplitSeamStaysWhenTheBorderIsSimplified) {
   const int n = 16;
   Mesh in;
@@ -194,7 +195,9 @@ TEST(Simplify, SplitSeamStaysWhenTheBorderIsSimplified) {
   add_half(0);
   add_half(n / 2);
   Mesh m = in;
-  Report r = simplify(m, faces(60));
+  Options keep = faces(60);
+  keep.split_vertices = SplitVertices::Keep;
+  Report r = simplify(m, keep);
   expect_valid(in, m, r);
   ASSERT_TRUE(r.boundary_simplified);
   const uint32_t w = n / 2 + 1, half = uint32_t(in.vertex_count() / 2);
@@ -205,6 +208,20 @@ TEST(Simplify, SplitSeamStaysWhenTheBorderIsSimplified) {
     outer_removed += r.remap[y * w] == kRemoved;
   }
   EXPECT_GT(outer_removed, 0u); // the outer border was simplified
+  // By default the column is welded for the run: it is simplified along itself, the same rows
+  // going on both sides (no crack), and the target is reached with fewer faces to spare.
+  Mesh welded = in;
+  const Report rw = simplify(welded, faces(60));
+  expect_valid(in, welded, rw);
+  EXPECT_EQ(rw.welded_vertices, size_t(n + 1));
+  EXPECT_TRUE(rw.target_reached) << rw.stop_detail;
+  size_t seam_removed = 0;
+  for (uint32_t y = 0; y <= uint32_t(n); ++y) {
+    EXPECT_EQ(rw.remap[y * w + w - 1] == kRemoved, rw.remap[half + y * w] == kRemoved)
+        << "row " << y << " went on one side of the seam only";
+    seam_removed += rw.remap[half + y * w] == kRemoved;
+  }
+  EXPECT_GT(seam_removed, 0u);
 }
 
 TEST(Simplify, EveryTargetKindIsMetAndNotOvershot) {

@@ -1,6 +1,7 @@
 #include "mesh_checks.h"
 
 #include "fold_over.h"
+#include "split_vertices.h"
 
 #include <algorithm>
 #include <cmath>
@@ -414,33 +415,55 @@ std::string check_run(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Opti
   }
   std::string e = check_indices(out); // before anything indexes with them
   if (!e.empty()) return e;
+  // Split vertices the core welded (Report::welded_vertices): the surface is judged as the
+  // core read it, the input welded and the output's copies put back onto the copies standing
+  // for them, both in the input's numbering; the raw output answers for its vertices and
+  // corners (subset, counts, corner sources).
+  vrs::Mesh in_w, out_w;
+  vrs::Report r_w;
+  const vrs::Mesh *src = &in, *dst = &out;
+  const vrs::Report* rr = &r;
+  if (r.welded_vertices) {
+    in_w = in;
+    const vrs::Welding w = vrs::weld_split_vertices(in_w.triangles, in_w.positions);
+    if (w.welded != r.welded_vertices) return "welded_vertices differs from the welding's count";
+    std::vector<uint32_t> input_of(out.vertex_count(), 0);
+    r_w = r;
+    for (size_t i = 0; i < r.remap.size(); ++i)
+      if (r.remap[i] != vrs::kRemoved)
+        input_of[r.remap[i]] = uint32_t(i), r_w.remap[i] = uint32_t(i);
+    out_w.positions = in.positions;
+    for (uint32_t v : out.triangles)
+      out_w.triangles.push_back(w.rep[input_of[v]]);
+    src = &in_w, dst = &out_w, rr = &r_w;
+  }
   // Each edge map once; the input's own only when it differs from the cleaned one.
   // The surface as the core reads it: reoriented where the core says it did.
-  vrs::Mesh clean = without_repeated_corner_faces(in);
+  vrs::Mesh clean = without_repeated_corner_faces(*src);
   if (r.reoriented_faces && orient_coherently(clean) != r.reoriented_faces)
     return "reoriented_faces differs from the faces a coherent orientation reverses";
-  const EdgeCounts clean_edges = edge_counts(clean), out_edges = edge_counts(out);
-  const EdgeStats before = stats_of(clean, clean_edges), after = stats_of(out, out_edges);
-  const size_t in_nonmanifold = clean.face_count() == in.face_count()
+  const EdgeCounts clean_edges = edge_counts(clean), out_edges = edge_counts(*dst);
+  const EdgeStats before = stats_of(clean, clean_edges), after = stats_of(*dst, out_edges);
+  const size_t in_nonmanifold = clean.face_count() == src->face_count()
                                     ? before.nonmanifold
-                                    : stats_of(in, edge_counts(in)).nonmanifold;
+                                    : stats_of(*src, edge_counts(*src)).nonmanifold;
   e = valid_given(in, out, r, in_nonmanifold, after.nonmanifold);
   if (!e.empty()) return e;
   if (r.faces != out.face_count() || r.vertices != out.vertex_count())
     return "report counts differ from the mesh";
   if (after.boundary > before.boundary) return "new boundary edges";
   if (!o.simplify_boundary && !r.boundary_simplified) {
-    e = boundary_kept(clean_edges, out_edges, r);
+    e = boundary_kept(clean_edges, out_edges, *rr);
     if (!e.empty()) return e;
   }
-  if (count_degenerate(out) > count_degenerate(clean)) return "new degenerate faces";
+  if (count_degenerate(*dst) > count_degenerate(clean)) return "new degenerate faces";
   // The corners' normals are the promise while the input-normal veto holds; it is eased, then
   // lifted (Report::relaxed_removals) to reach a target, the fold-over check below holds always.
-  if (size_t f = r.relaxed_removals ? 0 : count_flipped_new(clean, out, r))
+  if (size_t f = r.relaxed_removals ? 0 : count_flipped_new(clean, *dst, *rr))
     return std::to_string(f) + " new faces flipped against the input surface";
-  if (size_t f = count_fold_overs(clean, out, r))
+  if (size_t f = count_fold_overs(clean, *dst, *rr))
     return std::to_string(f) + " new faces fold over (against every input face near them)";
-  if (euler_of(out, out_edges) != euler_of(clean, clean_edges))
+  if (euler_of(*dst, out_edges) != euler_of(clean, clean_edges))
     return "a component's Euler characteristic changed";
   e = check_corner_sources(in, out, o, r);
   if (!e.empty()) return e;

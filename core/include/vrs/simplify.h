@@ -75,6 +75,16 @@ enum class Priority : uint8_t { Factor, LocalError };
 // error (see Priority::LocalError): lower error, and it goes on where projections fold.
 enum class Fill : uint8_t { Projection, Best };
 
+// Split vertices: copies of a vertex at one position, each side of a seam holding its own (a
+// texture seam or a flat-shading crease written for rendering, a soup of faces each with its
+// own three). Seam welds two border edges at the same two positions into one edge for the
+// run and keeps each side's copies on output: the seam is a constrained edge (see
+// constrained_edges), so the copies' own data (texture coordinates, normals) stay exact.
+// Weld welds them the same way but without the seam: for copies that carry nothing of their
+// own (positions only: the faces on either side may then take either copy). Keep leaves them
+// apart as borders, as before (locked where the border is simplified, so no crack opens).
+enum class SplitVertices : uint8_t { Keep, Seam, Weld };
+
 // Progress: fraction of the planned work done, in [0, 1]. Return false to stop; the mesh is left
 // valid (every removal is atomic).
 using ProgressFn = std::function<bool(float fraction)>;
@@ -102,6 +112,7 @@ struct Options {
   // whatever the target, such runs emptied the interior onto the border (a flat patch turned
   // into a tent fanned from one corner, 29 % of the diagonal off). False: the paper's rule.
   bool simplify_boundary_when_needed = true;
+  SplitVertices split_vertices = SplitVertices::Seam;
   // A triangle of the projection filling may turn at most this far from the average plane's
   // normal: the projection check alone allows up to 90°, and nearly vertical triangles are
   // folds in waiting. Fans are held instead to the faces they replace (no fold-over).
@@ -226,6 +237,8 @@ struct Report {
   size_t kept_constrained = 0;
   size_t constrained_edges = 0;     // constrained edges of the input (given and by feature angle)
   size_t unreferenced_vertices = 0; // left untouched
+  // Input vertices welded to another copy at their position for the run (split_vertices).
+  size_t welded_vertices = 0;
 
   // Removals made once the input-normal veto was eased (a new triangle may face away from the
   // input's normal at one of its three corners: when most of what is left is refused by that

@@ -1,0 +1,188 @@
+#include "split_vertices.h"
+
+#include <algorithm>
+#include <cstring>
+
+#include "topology.h"
+
+namespace vrs {
+
+namespace {
+
+struct Sets { // union-find, the lowest index standing for its set
+  std::vector<uint32_t> parent;
+  explicit Sets(size_t n) : parent(n) {
+    for (size_t v = 0; v < n; ++v)
+      parent[v] = uint32_t(v);
+  }
+  uint32_t find(uint32_t v) {
+    while (parent[v] != v)
+      v = parent[v] = parent[parent[v]];
+    return v;
+  }
+  void join(uint32_t a, uint32_t b) {
+    a = find(a), b = find(b);
+    if (a != b) parent[std::max(a, b)] = std::min(a, b);
+  }
+};
+
+uint64_t edge_key(uint32_t a, uint32_t b) {
+  return uint64_t(std::min(a, b)) << 32 | std::max(a, b);
+}
+
+// For each referenced vertex, the first referenced vertex at the same position, bit for bit
+// (kNone: unreferenced); false when no two share one.
+bool position_classes(const std::vector<uint32_t>& tris, const std::vector<float>& pos,
+                      std::vector<uint32_t>& cls) {
+  const size_t n = pos.size() / 3;
+  cls.assign(n, kNone);
+  for (uint32_t v : tris)
+    cls[v] = v;
+  size_t cap = 16;
+  while (cap < 2 * n)
+    cap <<= 1;
+  std::vector<uint32_t> table(cap, kNone); // open addressing, linear probing
+  bool any = false;
+  for (uint32_t v = 0; v < n; ++v) {
+    if (cls[v] == kNone) continue;
+    uint32_t bits[3];
+    std::memcpy(bits, &pos[3 * size_t(v)], sizeof bits);
+    uint64_t h = (bits[0] * 0x9E3779B97F4A7C15ull) ^ (bits[1] * 0xC2B2AE3D27D4EB4Full) ^
+                 (bits[2] * 0x165667B19E3779F9ull);
+    h ^= h >> 29;
+    for (size_t s = h & (cap - 1);; s = (s + 1) & (cap - 1)) {
+      const uint32_t u = table[s];
+      if (u == kNone) {
+        table[s] = v;
+        break;
+      }
+      if (std::memcmp(&pos[3 * size_t(u)], &pos[3 * size_t(v)], sizeof bits) == 0) {
+        cls[v] = u;
+        any = true;
+        break;
+      }
+    }
+  }
+  return any;
+}
+
+} // namespace
+
+Welding weld_split_vertices(std::vector<uint32_t>& tris, const std::vector<float>& positions) {
+  Welding w;
+  std::vector<uint32_t> cls;
+  if (!position_classes(tris, positions, cls)) return w;
+  const size_t n = cls.size();
+  std::vector<uint32_t> copies(n, 0);
+  for (size_t v = 0; v < n; ++v)
+    if (cls[v] != kNone) ++copies[cls[v]];
+  auto split = [&](uint32_t v) { return copies[cls[v]] > 1; };
+
+  // The border edges between split vertices: edges of those held by one face only.
+  struct Edge {
+    uint64_t key;
+    uint32_t a, b;
+  };
+  auto repeats = [&](size_t i) { // a face dropped later (prepare)
+    return tris[i] == tris[i + 1] || tris[i + 1] == tris[i + 2] || tris[i + 2] == tris[i];
+  };
+  std::vector<Edge> edges;
+  for (size_t i = 0; i + 2 < tris.size(); i += 3)
+    for (int c = 0; c < 3 && !repeats(i); ++c) {
+      const uint32_t a = tris[i + c], b = tris[i + (c + 1) % 3];
+      if (split(a) && split(b)) edges.push_back({edge_key(a, b), a, b});
+    }
+  auto by_key = [](const Edge& x, const Edge& y) { return x.key < y.key; };
+  std::sort(edges.begin(), edges.end(), by_key);
+  std::vector<Edge> border;
+  for (size_t i = 0; i < edges.size();) {
+    size_t j = i;
+    while (j < edges.size() && edges[j].key == edges[i].key)
+      ++j;
+    const Edge& e = edges[i];
+    if (j == i + 1 && cls[e.a] != cls[e.b])
+      border.push_back({edge_key(cls[e.a], cls[e.b]), e.a, e.b});
+    i = j;
+  }
+  std::vector<Edge>().swap(edges);
+
+  // Two border edges at the same two positions, and no third: one edge of the surface.
+  std::sort(border.begin(), border.end(), by_key);
+  Sets sets(n);
+  for (size_t i = 0; i < border.size();) {
+    size_t j = i;
+    while (j < border.size() && border[j].key == border[i].key)
+      ++j;
+    // Either way round: sides written in opposite orientations (panels of a CAD export) are
+    // then one surface that orient_coherently() turns as most of its faces were.
+    if (j == i + 2) {
+      const Edge &e = border[i], &f = border[i + 1];
+      const bool same_way = cls[e.a] == cls[f.a];
+      sets.join(e.a, same_way ? f.a : f.b);
+      sets.join(e.b, same_way ? f.b : f.a);
+    }
+    i = j;
+  }
+  std::vector<Edge>().swap(border);
+
+  // A face that would hold one vertex twice (a sliver along the seam) keeps its copies apart:
+  // its sets are undone, until no face is left so.
+  for (bool again = true; again;) {
+    again = false;
+    std::vector<uint8_t> undo(n, 0);
+    for (size_t i = 0; i + 2 < tris.size(); i += 3) {
+      const uint32_t *t = &tris[i], a = sets.find(t[0]), b = sets.find(t[1]), c = sets.find(t[2]);
+      if (repeats(i)) continue;
+      if (a == b || b == c || c == a) {
+        for (uint32_t r : {a, b, c})
+          undo[r] = 1;
+        again = true;
+      }
+    }
+    if (!again) break;
+    std::vector<uint32_t> root(n);
+    for (uint32_t v = 0; v < n; ++v)
+      root[v] = sets.find(v);
+    for (uint32_t v = 0; v < n; ++v)
+      if (undo[root[v]]) sets.parent[v] = v;
+  }
+
+  w.rep.resize(n);
+  for (uint32_t v = 0; v < n; ++v) {
+    w.rep[v] = sets.find(v);
+    w.welded += w.rep[v] != v;
+  }
+  if (w.welded == 0) return Welding{};
+  w.corners = tris;
+  std::vector<uint32_t> members(n, 0);
+  for (uint32_t v = 0; v < n; ++v)
+    ++members[w.rep[v]];
+  for (uint32_t& v : tris)
+    v = w.rep[v];
+
+  // The seams: welded edges whose two faces hold different copies at an end.
+  struct Side {
+    uint64_t key;
+    uint32_t lo, hi; // the copies at the lower and the higher standing end
+  };
+  std::vector<Side> sides;
+  for (size_t i = 0; i + 2 < tris.size(); i += 3)
+    for (int c = 0; c < 3 && !repeats(i); ++c) {
+      const uint32_t a = tris[i + c], b = tris[i + (c + 1) % 3];
+      if (members[a] < 2 || members[b] < 2) continue;
+      const uint32_t ca = w.corners[i + c], cb = w.corners[i + (c + 1) % 3];
+      sides.push_back({edge_key(a, b), a < b ? ca : cb, a < b ? cb : ca});
+    }
+  std::sort(sides.begin(), sides.end(), [](const Side& x, const Side& y) { return x.key < y.key; });
+  for (size_t i = 0; i < sides.size();) {
+    size_t j = i;
+    while (j < sides.size() && sides[j].key == sides[i].key)
+      ++j;
+    if (j == i + 2 && (sides[i].lo != sides[i + 1].lo || sides[i].hi != sides[i + 1].hi))
+      w.seams.insert(w.seams.end(), {uint32_t(sides[i].key >> 32), uint32_t(sides[i].key)});
+    i = j;
+  }
+  return w;
+}
+
+} // namespace vrs
