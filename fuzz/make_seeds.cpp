@@ -4,6 +4,7 @@
 #include <cstdio>
 #include <fstream>
 #include <string>
+#include <vector>
 
 #include "fuzz_case.h"
 #include "test_meshes.h"
@@ -36,6 +37,43 @@ int main(int argc, char** argv) {
   int written = 0;
   for (int i = 2; i < argc; ++i) {
     vrs::Mesh m = vrs_test::read_off(argv[i]);
+    if (i == 2) { // the first mesh also with its upper faces on copies of the shared vertices
+      vrs::Mesh split = m;
+      std::vector<uint8_t> upper(m.face_count()), used(m.vertex_count(), 0);
+      double mean = 0;
+      for (size_t v = 0; v < m.vertex_count(); ++v)
+        mean += m.positions[3 * v + 2] / double(m.vertex_count());
+      for (size_t f = 0; f < m.face_count(); ++f) {
+        double z = 0;
+        for (int c = 0; c < 3; ++c)
+          z += m.positions[3 * m.triangles[3 * f + c] + 2] / 3.0;
+        upper[f] = z > mean;
+        for (int c = 0; c < 3; ++c)
+          used[m.triangles[3 * f + c]] |= upper[f] ? 2 : 1;
+      }
+      std::vector<uint32_t> copy(m.vertex_count(), 0xffffffffu);
+      for (uint32_t v = 0; v < m.vertex_count(); ++v)
+        if (used[v] == 3) {
+          copy[v] = uint32_t(split.vertex_count());
+          for (int a = 0; a < 3; ++a)
+            split.positions.push_back(m.positions[3 * v + a]);
+        }
+      for (size_t f = 0; f < m.face_count(); ++f)
+        for (int c = 0; c < 3 && upper[f]; ++c)
+          if (copy[m.triangles[3 * f + c]] != 0xffffffffu)
+            split.triangles[3 * f + c] = copy[m.triangles[3 * f + c]];
+      // Seams (the default) and welded freely (mode bits 3), at 10 % and 1 %.
+      const Variant split_variants[] = {{2, 0, 0x19999999u},
+                                        {2 | (3 << 3), 0, 0x19999999u},
+                                        {2 | 0x80 | (3 << 3), 4, 0x028f5c28u}};
+      int k = 0;
+      for (const Variant& v : split_variants) {
+        auto bytes = vrs_test::encode_fuzz_case(split, v.f0, v.f1, 1000, v.param);
+        std::ofstream(out + "/split." + std::to_string(k++), std::ios::binary)
+            .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+        ++written;
+      }
+    }
     if (m.vertex_count() == 0 || m.vertex_count() > 65535) {
       std::fprintf(stderr, "skipped %s\n", argv[i]);
       continue;

@@ -113,13 +113,13 @@ Welding weld_split_vertices(std::vector<uint32_t>& tris, const std::vector<float
     size_t j = i;
     while (j < border.size() && border[j].key == border[i].key)
       ++j;
-    // Either way round: sides written in opposite orientations (panels of a CAD export) are
-    // then one surface that orient_coherently() turns as most of its faces were.
-    if (j == i + 2) {
-      const Edge &e = border[i], &f = border[i + 1];
-      const bool same_way = cls[e.a] == cls[f.a];
-      sets.join(e.a, same_way ? f.a : f.b);
-      sets.join(e.b, same_way ? f.b : f.a);
+    // Walked the opposite ways, as by two faces of one oriented surface. (Welded the same way
+    // too, the panels of a CAD export written in random orientations became one piece whose
+    // minority was turned over: CGAL's boeing came out with half its area facing against the
+    // input's faces.)
+    if (j == i + 2 && cls[border[i].a] == cls[border[i + 1].b]) {
+      sets.join(border[i].a, border[i + 1].b);
+      sets.join(border[i].b, border[i + 1].a);
     }
     i = j;
   }

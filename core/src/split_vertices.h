@@ -23,9 +23,9 @@ struct Welding {
 };
 
 // Welds the vertices of `tris` whose border edges pair up with another's at the same two
-// positions (bit-for-bit equal coordinates; an edge position held by more than two border
-// edges is left alone), unless a face would then hold one vertex twice. Rewrites `tris` to the
-// standing copies. Costs one hash of the referenced positions when nothing is split.
+// positions, walked the other way (bit-for-bit equal coordinates; an edge position held by more
+// than two border edges is left alone), unless a face would then hold one vertex twice. Rewrites
+// `tris` to the standing copies. Costs one hash of the referenced positions when nothing is split.
 Welding weld_split_vertices(std::vector<uint32_t>& tris, const std::vector<float>& positions);
 
 } // namespace vrs

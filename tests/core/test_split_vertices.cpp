@@ -161,9 +161,11 @@ TEST(SplitVertices, ALockedCopyKeepsTheVertexAndEveryCopy) {
   EXPECT_EQ(vrs_test::check_run(in, out, o, r), "");
   EXPECT_NE(r.remap[copy], kRemoved);
   // Its twin: the original vertex at the same position.
-  for (uint32_t v = 0; v < whole.vertex_count(); ++v)
-    if (std::equal(&in.positions[3 * v], &in.positions[3 * v] + 3, &in.positions[3 * copy]))
+  for (uint32_t v = 0; v < whole.vertex_count(); ++v) {
+    if (std::equal(&in.positions[3 * v], &in.positions[3 * v] + 3, &in.positions[3 * copy])) {
       EXPECT_NE(r.remap[v], kRemoved) << "the locked copy's twin went";
+    }
+  }
 }
 
 TEST(SplitVertices, WithoutCopiesTheRunIsTheSameInEveryMode) {

@@ -51,6 +51,8 @@ FuzzCase decode_fuzz_case(const uint8_t* data, size_t size) {
   // on meshes the fuzzer makes (from 256 vertices).
   if ((f0 & 7) >= 5) o.part_vertices = 64;
   o.mode = vrs::Mode(((f0 >> 3) & 3) % 3);
+  // Mode bits 3 (a second surface mode): split vertices welded freely instead of as seams.
+  if (((f0 >> 3) & 3) == 3) o.split_vertices = vrs::SplitVertices::Weld;
   o.queue = f0 & 0x20 ? vrs::QueueKind::Heap : vrs::QueueKind::Intervals;
   o.mapping = f0 & 0x40 ? vrs::IntervalMapping::Logarithmic : vrs::IntervalMapping::Linear;
   o.simplify_boundary = f0 & 0x80;
