@@ -482,10 +482,10 @@ int main(int argc, char** argv) {
   const std::vector<uint32_t> seams = vrs_tool::seams(*loaded.doc, mesh);
   opt.constrained_edges = &seams;
   opt.corner_sources = vrs_tool::has_corner_data(*loaded.doc);
-  // Copies that hold nothing but a position are interchangeable: no seam to keep.
-  opt.split_vertices = split                                        ? *split
-                       : vrs_tool::has_vertex_data(*loaded.doc, in) ? vrs::SplitVertices::Seam
-                                                                    : vrs::SplitVertices::Weld;
+  // Copies that hold nothing but a position, in faces without per-corner data, are
+  // interchangeable: no seam to keep.
+  const bool data = opt.corner_sources || vrs_tool::has_vertex_data(*loaded.doc, in);
+  opt.split_vertices = split ? *split : data ? vrs::SplitVertices::Seam : vrs::SplitVertices::Weld;
   const bool terminal = isatty(STDERR_FILENO);
   vrs_tool::ProgressBar bar(progress == 1 || (progress == -1 && terminal), terminal);
   opt.progress = [&bar](float f) { return bar.update(f); };

@@ -125,11 +125,22 @@ Welding weld_split_vertices(std::vector<uint32_t>& tris, const std::vector<float
   }
   std::vector<Edge>().swap(border);
 
-  // A face that would hold one vertex twice (a sliver along the seam) keeps its copies apart:
-  // its sets are undone, until no face is left so.
+  // A face that would hold one vertex twice (a sliver along the seam), or an edge that
+  // welding would give a third face or two faces walking it the same way (sets joined through
+  // other edges), keeps its copies apart: those sets are undone, until no such face or edge
+  // is left.
+  struct Walk {
+    uint64_t key;         // the welded edge, either way
+    uint32_t from, to, a; // welded ends as walked; the input's first end
+  };
+  std::vector<Walk> walks;
   for (bool again = true; again;) {
     again = false;
     std::vector<uint8_t> undo(n, 0);
+    std::vector<uint32_t> size(n, 0);
+    for (uint32_t v = 0; v < n; ++v)
+      ++size[sets.find(v)];
+    walks.clear();
     for (size_t i = 0; i + 2 < tris.size(); i += 3) {
       const uint32_t *t = &tris[i], a = sets.find(t[0]), b = sets.find(t[1]), c = sets.find(t[2]);
       if (repeats(i)) continue;
@@ -137,7 +148,26 @@ Welding weld_split_vertices(std::vector<uint32_t>& tris, const std::vector<float
         for (uint32_t r : {a, b, c})
           undo[r] = 1;
         again = true;
+        continue;
       }
+      const uint32_t r[3] = {a, b, c};
+      for (int k = 0; k < 3; ++k)
+        if (size[r[k]] > 1 || size[r[(k + 1) % 3]] > 1)
+          walks.push_back({edge_key(r[k], r[(k + 1) % 3]), r[k], r[(k + 1) % 3], t[k]});
+    }
+    std::sort(walks.begin(), walks.end(),
+              [](const Walk& x, const Walk& y) { return x.key < y.key; });
+    for (size_t i = 0; i < walks.size();) {
+      size_t j = i;
+      while (j < walks.size() && walks[j].key == walks[i].key)
+        ++j;
+      const bool third = j - i > 2, same_way = j - i == 2 && walks[i].from == walks[i + 1].from &&
+                                               walks[i].a != walks[i + 1].a;
+      if (third || same_way) {
+        undo[walks[i].from] = undo[walks[i].to] = 1;
+        again = true;
+      }
+      i = j;
     }
     if (!again) break;
     std::vector<uint32_t> root(n);
@@ -169,7 +199,7 @@ Welding weld_split_vertices(std::vector<uint32_t>& tris, const std::vector<float
   for (size_t i = 0; i + 2 < tris.size(); i += 3)
     for (int c = 0; c < 3 && !repeats(i); ++c) {
       const uint32_t a = tris[i + c], b = tris[i + (c + 1) % 3];
-      if (members[a] < 2 || members[b] < 2) continue;
+      if (members[a] < 2 && members[b] < 2) continue; // a seam may end at a shared vertex
       const uint32_t ca = w.corners[i + c], cb = w.corners[i + (c + 1) % 3];
       sides.push_back({edge_key(a, b), a < b ? ca : cb, a < b ? cb : ca});
     }

@@ -22,7 +22,8 @@ declare -A args=(
   [--max-error]="--max-error 0.5%" [--max-factor]="--max-factor 0.001" [--max-jump]="--max-jump 2"
   [--mode]="--mode planar" [--priority]="--priority factor" [--progress]="--progress"
   [--queue]="--queue heap" [--ratio]="--ratio 0.2" [--reprice]="--reprice eager"
-  [--simplify-boundary]="--simplify-boundary" [--threads]="--threads 1" [--version]="--version"
+  [--simplify-boundary]="--simplify-boundary" [--split-vertices]="--split-vertices keep"
+  [--threads]="--threads 1" [--version]="--version"
   [--vertices]="--vertices 3000" [--memory]="" [--scheduler]="" [--work-dir]="" [--workers]="--workers 1"
   [--lods]="" [--compress]=""
 )
