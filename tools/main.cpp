@@ -479,13 +479,28 @@ int main(int argc, char** argv) {
   // turning more than the feature angle or 60°) stay, new faces take the data of the corners
   // they replace (flat-shaded normals: their own).
   vrs_tool::set_feature_angle(*loaded.doc, opt.feature_angle_deg);
-  const std::vector<uint32_t> seams = vrs_tool::seams(*loaded.doc, mesh);
-  opt.constrained_edges = &seams;
   opt.corner_sources = vrs_tool::has_corner_data(*loaded.doc);
-  // Copies that hold nothing but a position, in faces without per-corner data, are
-  // interchangeable: no seam to keep.
-  const bool data = opt.corner_sources || vrs_tool::has_vertex_data(*loaded.doc, in);
-  opt.split_vertices = split ? *split : data ? vrs::SplitVertices::Seam : vrs::SplitVertices::Weld;
+  // Split vertices that hold nothing but a position, in faces whose corners hold nothing that
+  // tells a seam's sides apart (flat shading holds nothing), are interchangeable: welded
+  // freely, the per-corner data's seams found across split edges as across shared ones (the
+  // faces read through the copies that stand for them). Others keep their sides (Seam).
+  const bool own_data =
+      vrs_tool::has_vertex_data(*loaded.doc, in) || vrs_tool::has_seam_data(*loaded.doc);
+  opt.split_vertices = split      ? *split
+                       : own_data ? vrs::SplitVertices::Seam
+                                  : vrs::SplitVertices::Weld;
+  std::vector<uint32_t> seams;
+  if (opt.split_vertices == vrs::SplitVertices::Keep) {
+    seams = vrs_tool::seams(*loaded.doc, mesh);
+  } else {
+    vrs::Mesh welded;
+    const std::vector<uint32_t> standing = vrs::split_vertex_standing(mesh);
+    welded.triangles.reserve(mesh.triangles.size());
+    for (uint32_t v : mesh.triangles)
+      welded.triangles.push_back(standing[v]);
+    seams = vrs_tool::seams(*loaded.doc, welded);
+  }
+  opt.constrained_edges = &seams;
   const bool terminal = isatty(STDERR_FILENO);
   vrs_tool::ProgressBar bar(progress == 1 || (progress == -1 && terminal), terminal);
   opt.progress = [&bar](float f) { return bar.update(f); };

@@ -124,6 +124,11 @@ bool has_corner_data(const VcgDocument& doc) {
   return doc.corner_data().any();
 }
 
+bool has_seam_data(const VcgDocument& doc) {
+  const vrs_vcg::CornerData d = doc.corner_data();
+  return d.texcoord || d.color || d.face_color || (d.normal && !d.flat_normals);
+}
+
 bool has_vertex_data(const VcgDocument& doc, const std::string& path) {
   using Mask = vcg::tri::io::Mask;
   if (doc.mask & (Mask::IOM_VERTNORMAL | Mask::IOM_VERTCOLOR | Mask::IOM_VERTQUALITY |

@@ -29,6 +29,9 @@ bool has_corner_data(const VcgDocument& doc);
 // quality, or a PLY vertex property of any other name): copies of one position may then
 // differ, and a seam written as split vertices keeps each side's.
 bool has_vertex_data(const VcgDocument& doc, const std::string& path);
+// True when the faces' corners hold data that can tell two sides of a seam apart: texture
+// coordinates, colors, smooth normals (flat shading, one normal a face, cannot).
+bool has_seam_data(const VcgDocument& doc);
 // Per-corner normals turning more than this make a hard edge (default vrs_vcg::kNormalCreaseDeg).
 void set_feature_angle(VcgDocument& doc, double degrees);
 // Edges across which that data differs (seams), as core vertex pairs: the core keeps them.

@@ -4,6 +4,7 @@
 #include <cstring>
 
 #include "topology.h"
+#include "vrs/simplify.h"
 
 namespace vrs {
 
@@ -213,6 +214,17 @@ Welding weld_split_vertices(std::vector<uint32_t>& tris, const std::vector<float
     i = j;
   }
   return w;
+}
+
+std::vector<uint32_t> split_vertex_standing(const Mesh& mesh) {
+  std::vector<uint32_t> tris = mesh.triangles;
+  Welding w = weld_split_vertices(tris, mesh.positions);
+  if (w.rep.empty()) {
+    w.rep.resize(mesh.vertex_count());
+    for (size_t v = 0; v < w.rep.size(); ++v)
+      w.rep[v] = uint32_t(v);
+  }
+  return w.rep;
 }
 
 } // namespace vrs

@@ -284,6 +284,11 @@ Report simplify(Mesh& mesh, const Options& options);
 // the unit of relative errors (CLI --max-error E%, the plugin's MaxError, the benchmark).
 double bounding_box_diagonal(const Mesh& mesh);
 
+// For each vertex, the copy a run with split_vertices Seam or Weld welds it to (itself when
+// none): an adapter that finds seams in per-corner data finds them across split edges too when
+// it reads the faces through this (the command-line tool does, then runs Weld).
+std::vector<uint32_t> split_vertex_standing(const Mesh& mesh);
+
 // Short parsers used by the adapters (CLI, plugin): false on an unknown name.
 bool parse_mode(const std::string& s, Mode& out);
 bool parse_queue(const std::string& s, QueueKind& out);
