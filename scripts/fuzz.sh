@@ -21,7 +21,7 @@ data=$top/third_party/cgal-data/data/meshes
 "$b/bin/vrs_fuzz_seeds" "$b/seeds" "$top"/meshes/mushroom.off "$top"/meshes/three_peaks.off \
   $(find "$data" -name '*.off' -size -24k | sort) >/dev/null
 echo "fuzz: ${seconds} s, seed ${seed} (0: drawn), corpus $b/corpus, seeds $b/seeds"
-"$b/bin/vrs_fuzz" -seed="$seed" -max_total_time="$seconds" -max_len=65536 -timeout=20 -rss_limit_mb=4096 \
+"$b/bin/vrs_fuzz" -seed="$seed" -max_total_time="$seconds" -max_len=65536 -timeout=90 -rss_limit_mb=4096 \
   -print_final_stats=1 -artifact_prefix="$b/findings/" "$b/corpus" "$b/seeds" 2>"$b/fuzz.log" || {
   grep -E "invariant broken|ERROR|runtime error" "$b/fuzz.log" | head -5
   echo "fuzz: a finding, see $b/findings/ and $b/fuzz.log"
