@@ -31,6 +31,16 @@ uint64_t edge_key(uint32_t a, uint32_t b) {
   return uint64_t(std::min(a, b)) << 32 | std::max(a, b);
 }
 
+// Sorts `v` by its `key` and calls `run(i, j)` for each run [i, j) of one key.
+template <class T, class Run> void sorted_runs(std::vector<T>& v, Run run) {
+  std::sort(v.begin(), v.end(), [](const T& x, const T& y) { return x.key < y.key; });
+  for (size_t i = 0, j; i < v.size(); i = j) {
+    for (j = i; j < v.size() && v[j].key == v[i].key;)
+      ++j;
+    run(i, j);
+  }
+}
+
 // For each referenced vertex, the first referenced vertex at the same position, bit for bit
 // (kNone: unreferenced); false when no two share one.
 bool position_classes(const std::vector<uint32_t>& tris, const std::vector<float>& pos,
@@ -93,27 +103,17 @@ Welding weld_split_vertices(std::vector<uint32_t>& tris, const std::vector<float
       const uint32_t a = tris[i + c], b = tris[i + (c + 1) % 3];
       if (split(a) && split(b)) edges.push_back({edge_key(a, b), a, b});
     }
-  auto by_key = [](const Edge& x, const Edge& y) { return x.key < y.key; };
-  std::sort(edges.begin(), edges.end(), by_key);
   std::vector<Edge> border;
-  for (size_t i = 0; i < edges.size();) {
-    size_t j = i;
-    while (j < edges.size() && edges[j].key == edges[i].key)
-      ++j;
+  sorted_runs(edges, [&](size_t i, size_t j) {
     const Edge& e = edges[i];
     if (j == i + 1 && cls[e.a] != cls[e.b])
       border.push_back({edge_key(cls[e.a], cls[e.b]), e.a, e.b});
-    i = j;
-  }
+  });
   std::vector<Edge>().swap(edges);
 
   // Two border edges at the same two positions, and no third: one edge of the surface.
-  std::sort(border.begin(), border.end(), by_key);
   Sets sets(n);
-  for (size_t i = 0; i < border.size();) {
-    size_t j = i;
-    while (j < border.size() && border[j].key == border[i].key)
-      ++j;
+  sorted_runs(border, [&](size_t i, size_t j) {
     // Walked the opposite ways, as by two faces of one oriented surface. (Welded the same way
     // too, the panels of a CAD export written in random orientations became one piece whose
     // minority was turned over: CGAL's boeing came out with half its area facing against the
@@ -122,8 +122,7 @@ Welding weld_split_vertices(std::vector<uint32_t>& tris, const std::vector<float
       sets.join(border[i].a, border[i + 1].b);
       sets.join(border[i].b, border[i + 1].a);
     }
-    i = j;
-  }
+  });
   std::vector<Edge>().swap(border);
 
   // A face that would hold one vertex twice (a sliver along the seam), or an edge that
@@ -156,20 +155,14 @@ Welding weld_split_vertices(std::vector<uint32_t>& tris, const std::vector<float
         if (size[r[k]] > 1 || size[r[(k + 1) % 3]] > 1)
           walks.push_back({edge_key(r[k], r[(k + 1) % 3]), r[k], r[(k + 1) % 3], t[k]});
     }
-    std::sort(walks.begin(), walks.end(),
-              [](const Walk& x, const Walk& y) { return x.key < y.key; });
-    for (size_t i = 0; i < walks.size();) {
-      size_t j = i;
-      while (j < walks.size() && walks[j].key == walks[i].key)
-        ++j;
+    sorted_runs(walks, [&](size_t i, size_t j) {
       const bool third = j - i > 2, same_way = j - i == 2 && walks[i].from == walks[i + 1].from &&
                                                walks[i].a != walks[i + 1].a;
       if (third || same_way) {
         undo[walks[i].from] = undo[walks[i].to] = 1;
         again = true;
       }
-      i = j;
-    }
+    });
     if (!again) break;
     std::vector<uint32_t> root(n);
     for (uint32_t v = 0; v < n; ++v)
@@ -204,15 +197,10 @@ Welding weld_split_vertices(std::vector<uint32_t>& tris, const std::vector<float
       const uint32_t ca = w.corners[i + c], cb = w.corners[i + (c + 1) % 3];
       sides.push_back({edge_key(a, b), a < b ? ca : cb, a < b ? cb : ca});
     }
-  std::sort(sides.begin(), sides.end(), [](const Side& x, const Side& y) { return x.key < y.key; });
-  for (size_t i = 0; i < sides.size();) {
-    size_t j = i;
-    while (j < sides.size() && sides[j].key == sides[i].key)
-      ++j;
+  sorted_runs(sides, [&](size_t i, size_t j) {
     if (j == i + 2 && (sides[i].lo != sides[i + 1].lo || sides[i].hi != sides[i + 1].hi))
       w.seams.insert(w.seams.end(), {uint32_t(sides[i].key >> 32), uint32_t(sides[i].key)});
-    i = j;
-  }
+  });
   return w;
 }
 
