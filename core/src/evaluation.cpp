@@ -128,6 +128,7 @@ Evaluation Evaluator::evaluate(uint32_t v, const Ring& ring, bool boundary_line)
   if (boundary_line && !ring.closed()) {
     // Corners of the outline stay: removing one cuts a piece off the mesh's shape, which a
     // factor (a distance) cannot price. A turn above 30° is a corner, as a polyline would say.
+    // (The local error can price it: with it, the Simplifier sets no corner.)
     Vec3 in = normalized(c - p[k - 1]), out = normalized(p[0] - c);
     if (!(dot(in, out) >= corner_cos_)) {
       e.factor = std::numeric_limits<double>::infinity();

@@ -32,7 +32,8 @@ class Evaluator {
   Vec3 position(uint32_t v) const { return {pos_[3 * v], pos_[3 * v + 1], pos_[3 * v + 2]}; }
 
   // Outline corners: a boundary vertex whose outline turns more than acos(cos) is kept
-  // (default kBoundaryCornerCos). The driver's last-resort pass sets -1: none is.
+  // (default kBoundaryCornerCos). -1: none is (the local-error price, and the factor's last
+  // resort).
   void set_boundary_corner_cos(double cos) { corner_cos_ = cos; }
 
   // Factor of v with its ordered ring. `boundary_line` adds, for an open ring, the distance to

@@ -45,7 +45,8 @@ void declare_parameters(const MeshModel& m, RichParameterList& par) {
                         "Keep every boundary vertex (the paper's rule), unless the kept boundary "
                         "alone would take more than a quarter of the faces asked for: then it is "
                         "simplified too, and the log says so. Off: boundary vertices may go too, "
-                        "except outline corners turning more than 30 degrees."));
+                        "priced by the piece of the outline they cut off (with the evaluation "
+                        "factor as priority, outline corners turning more than 30 degrees stay)."));
   par.addParam(RichBool("Selected", m.cm.sfn > 0, "Simplify only selected faces",
                         "Only vertices whose faces are all selected may be removed; the target "
                         "counts the whole mesh, as in Quadric Edge Collapse Decimation."));

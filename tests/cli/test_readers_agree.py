@@ -2,7 +2,10 @@
 index) and an unused vertex — written as ascii and binary PLY, OBJ, OFF and ascii and binary STL,
 gives the same run through the CLI: the same counts of input faces, of NaN vertices, of dropped
 degenerate faces, the same output face count and stop reason (STL, a soup of triangles, is
-welded by position; its unused vertex does not exist).
+welded by position; its unused vertex does not exist). The welded soup numbers its vertices in
+another order, and equal prices are taken in vertex order: its last removal may take one face
+more or less than the indexed formats' (a border vertex's removal takes one face, an interior
+one's two), so the two STL runs agree with each other exactly and with the rest within a face.
 
     test_readers_agree.py VRSIMPLIFY OUT_DIR
 """
@@ -79,7 +82,16 @@ for label, path in files.items():
     runs[label].update({k: report.get("input_issues", {}).get(k, 0) for k in issues})
 for label, got in runs.items():
     print(f"{label:11s} {got}")
-reference = runs["binary PLY"]
-bad = [label for label, got in runs.items() if got != reference]
+def agree(got, ref):
+    if got == ref:
+        return True
+    if "error" in got or "error" in ref:
+        return False
+    return all(got[k] == ref[k] for k in got if k != "output_faces") and abs(got["output_faces"] - ref["output_faces"]) <= 1
+
+
+reference, soup = runs["binary PLY"], runs["binary STL"]
+bad = [label for label, got in runs.items() if not (got == soup if "STL" in label else got == reference)]
+bad += [] if agree(soup, reference) else ["STL against the indexed formats"]
 print("readers agree" if not bad else f"readers disagree: {bad}")
 sys.exit(1 if bad else 0)

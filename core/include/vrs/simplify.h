@@ -101,9 +101,11 @@ struct Options {
   int intervals = 1000;
   // Boundary vertices are kept by default (paper §2.2). When true, a boundary vertex may be
   // removed (factor: the larger of its distance to the line through its two boundary neighbours
-  // and its average-plane factor); vertices of a single triangle are always kept, and corners,
-  // where the outline turns by more than 30°, are kept unless a count target cannot be met
-  // otherwise (see Report::relaxed_removals).
+  // and its average-plane factor); vertices of a single triangle are kept unless a count target
+  // cannot be met otherwise (see Report::relaxed_removals). With Priority::Factor, corners,
+  // where the outline turns by more than 30°, are kept the same way; the local error (the
+  // default) prices them: the piece a corner's removal cuts off is its distance to the new
+  // patch.
   bool simplify_boundary = false;
   // With a count target and boundary simplification off: when the kept border alone would
   // take more than a quarter of the faces asked for (any triangulation keeping B border
@@ -245,7 +247,7 @@ struct Report {
   // veto alone, or at a price jump, see max_price_jump) or lifted by the last resort: when
   // nothing else was left to remove and a count target was not met, a new triangle has to
   // face the input's side at one of its corners only,
-  // outline corners may go, and where every fan and the projection of an interior vertex is
+  // single triangles (and the factor's outline corners) may go, and where every fan and the projection of an interior vertex is
   // refused, the ring's triangulation that stands nearest the old fan, of those no veto
   // refuses, is taken. It still may not fold over the faces it replaces.
   size_t relaxed_removals = 0;
