@@ -66,6 +66,10 @@ one_mesh() { # file scratch-dir: its rows on stdout
   # One model in several formats (assimp's Wuson .off/.ply/.stl): each run keeps its own name.
   [ "$set_name" != assimp ] || [ "$(printf '%s\n' "${files[@]}" | grep -c "^/usr/share/assimp/.*/$name\.[^/]*$")" -le 1 ] ||
     name=$name-${f##*.}
+  # CGAL's too (pig.off and pig.stl are two meshes; sphere.off/.ply/.stl one in three formats):
+  # the .off keeps the plain name (the held-out choice hashes it), the others are suffixed.
+  [ "$set_name" != cgal ] || [ "${f##*.}" = off ] || [ "$(printf '%s\n' "${files[@]}" | grep -c "cgal-data/.*/$name\.[^/]*$")" -le 1 ] ||
+    name=$name-${f##*.}
   if [ ${#only[@]} -gt 0 ] && ! printf '%s\n' "${only[@]}" | grep -qx "$name"; then return; fi
   if [ "$tuning" -eq 1 ] && python3 -c 'import hashlib,sys; s,m=sys.argv[1:3]; sys.exit(0 if m not in {"bunny00","armadillo","fandisk","mushroom","three_peaks","elephant"} and hashlib.sha1(f"{s}/{m}".encode()).digest()[0] % 4 == 0 else 1)' "$set_name" "$name"; then
     return 0 # held out: never in a tuning loop (bench/quality_report.py names them)
