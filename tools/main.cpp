@@ -85,7 +85,7 @@ const char* kUsage =
     "  --compress                      EXT_meshopt_compression (meshoptimizer's codec,\n"
     "                                  lossless: positions stay the input's floats); the\n"
     "                                  levels still stream coarsest first\n"
-    "bigger than memory (tiled, out of core; with --ratio):\n"
+    "bigger than memory (tiled, out of core; with --ratio, --split-vertices):\n"
     "  --memory SIZE                   memory budget (512M, 2G, ...): a mesh that does not\n"
     "                                  fit is streamed into tiles simplified on local worker\n"
     "                                  processes and joined by input vertex id, written in the\n"
@@ -248,10 +248,9 @@ int main(int argc, char** argv) {
     };
     const char* v = nullptr;
     // Options a tiled run does not honour yet: it refuses them by name (never ignores them).
-    for (const char* o :
-         {"--ascii", "--simplify-boundary", "--keep-boundary", "--max-jump", "--error-bound",
-          "--mode", "--queue", "--fill", "--priority", "--mapping", "--feature-angle", "--reprice",
-          "--intervals", "--threads", "--split-vertices"})
+    for (const char* o : {"--ascii", "--simplify-boundary", "--keep-boundary", "--max-jump",
+                          "--error-bound", "--mode", "--queue", "--fill", "--priority", "--mapping",
+                          "--feature-angle", "--reprice", "--intervals", "--threads"})
       if (a == o && not_tiled.empty()) not_tiled = a;
     if (a == "--help" || a == "-h") {
       std::printf("%s", kUsage);
@@ -449,6 +448,10 @@ int main(int argc, char** argv) {
       if (!refusal.empty()) return usage_error(refusal);
       tiled.input = in, tiled.output = out, tiled.ratio = opt.target.ratio;
       tiled.json = json;
+      if (split)
+        tiled.split_vertices = *split == vrs::SplitVertices::Weld   ? "weld"
+                               : *split == vrs::SplitVertices::Keep ? "keep"
+                                                                    : "seam";
       tiled.progress = progress == 1 || (progress == -1 && isatty(STDERR_FILENO));
       return vrs_tool::run_tiled(tiled);
     }

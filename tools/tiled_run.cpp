@@ -44,6 +44,7 @@ int run_on_dask(const TiledRequest& r) {
                                    "--scheduler", r.scheduler};
   if (r.memory) args.insert(args.end(), {"--memory", std::to_string(r.memory)});
   if (!r.workdir.empty()) args.insert(args.end(), {"--work-dir", r.workdir});
+  if (!r.split_vertices.empty()) args.insert(args.end(), {"--split-vertices", r.split_vertices});
   return exec_python_module("vrsimplify.tiled", args, "--scheduler",
                             "pip install vrsimplify dask distributed");
 }
@@ -88,6 +89,7 @@ int run_in(const std::string& dir, const TiledRequest& r, int workers) {
   vrs::tiled::Settings s;
   s.ratio = r.ratio;
   s.faces_per_tile = vrs::tiled::faces_for_memory(r.memory);
+  s.split_vertices = r.split_vertices;
   s.workdir = dir;
   int levels = 0;
   uint64_t input_faces = 0, output_faces = 0;

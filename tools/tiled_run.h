@@ -13,6 +13,7 @@ struct TiledRequest {
   uint64_t memory = 0; // bytes
   int workers = 0;     // 0: the machine's cores
   bool progress = false, json = false, keep_workdir = false;
+  std::string split_vertices; // seam, weld, keep; "": chosen from the file's data
 };
 
 // Faces the file holds (PLY: its header; other formats: estimated from the size), 0 if unknown.

@@ -48,14 +48,19 @@ template <class F> auto guarded(F&& f) {
 } // namespace
 
 void register_tiled(nb::module_& m) {
-  m.def("tiled_begin", [](const std::string& input, const std::string& workdir, double ratio,
-                          uint64_t faces_per_tile) {
-    vrs::tiled::Settings s;
-    s.ratio = ratio;
-    s.faces_per_tile = faces_per_tile;
-    s.workdir = workdir;
-    return level_dict(guarded([&] { return vrs::tiled::begin(input, s); }));
-  });
+  m.def(
+      "tiled_begin",
+      [](const std::string& input, const std::string& workdir, double ratio,
+         uint64_t faces_per_tile, const std::string& split_vertices) {
+        vrs::tiled::Settings s;
+        s.ratio = ratio;
+        s.faces_per_tile = faces_per_tile;
+        s.workdir = workdir;
+        s.split_vertices = split_vertices;
+        return level_dict(guarded([&] { return vrs::tiled::begin(input, s); }));
+      },
+      nb::arg("input"), nb::arg("workdir"), nb::arg("ratio"), nb::arg("faces_per_tile"),
+      nb::arg("split_vertices") = "");
   m.def("tiled_run_tile", [](const std::string& workdir, int level, uint64_t tile) {
     guarded([&] {
       vrs::tiled::run_tile(workdir, level, tile);

@@ -193,6 +193,43 @@ def test_bad_input_is_a_clear_error_and_leaves_nothing(big, tmp_path):
         assert not (tmp_path / name).exists() and not list(tmp_path.glob("vrsimplify-tiles-*"))
 
 
+def test_split_vertices_are_welded_in_the_tiles_as_in_core(tmp_path):
+    # A sphere whose upper faces hold their own copies of the equator's vertices (positions
+    # only): welded by default (as the in-core run of such a file), so the equator goes with
+    # the rest and the output closes by position; "keep" leaves the copies apart, as borders.
+    m = trimesh.creation.icosphere(subdivisions=5)
+    v, f = m.vertices.astype(np.float32), np.asarray(m.faces)
+    upper = v[f].mean(axis=1)[:, 2] > 0
+    seam = np.intersect1d(f[upper].ravel(), f[~upper].ravel())
+    copy = np.full(len(v), -1)
+    copy[seam] = len(v) + np.arange(len(seam))
+    f = f.copy()
+    f[upper] = np.where(copy[f[upper]] >= 0, copy[f[upper]], f[upper])
+    v = np.vstack([v, v[seam]])
+    src = tmp_path / "split.ply"
+    trimesh.Trimesh(v, f, process=False).export(src)
+    equator = {tuple(p) for p in v[seam].tolist()}
+
+    def run(name, **kw):
+        out = tmp_path / name
+        r = vrsimplify.tiled.simplify(src, out, ratio=0.05, memory="1M", workers=2, **kw)
+        assert len(r["levels"]) > 1  # in tiles, not one in-core run
+        vo, fo = read_ply(out)
+        _, by_position = np.unique(vo, axis=0, return_inverse=True)
+        counts = edge_face_counts(by_position.reshape(-1)[fo])
+        kept = {tuple(p) for p in vo.tolist()} & equator
+        return r, set(counts.values()), len(kept)
+
+    r, closed, kept = run("welded.ply")
+    assert r["target_reached"] and closed == {2} and kept < len(equator) / 2
+    _, closed, kept = run("kept.ply", split_vertices="keep")
+    assert closed == {2} and kept == len(equator)
+    with pytest.raises(ValueError, match="split_vertices must be seam, weld or keep"):
+        vrsimplify.tiled.simplify(src, tmp_path / "never.ply", ratio=0.05, memory="1M",
+                                  split_vertices="glue")
+    assert not (tmp_path / "never.ply").exists()
+
+
 def textured_obj(path):
     """An OBJ with everything a scan or a photogrammetry mesh carries: vertex colors on the v
     lines, a normal per vertex, texture charts (one vt per vertex and chart, its value naming

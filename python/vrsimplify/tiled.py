@@ -48,7 +48,7 @@ def _run_remote_tile(fs, remote: str, level: int, tile: int) -> int:
 def simplify(src: Union[str, os.PathLike], dst: Union[str, os.PathLike], *, ratio: float,
              memory: Union[str, int] = "2G", client=None, workdir: Optional[str] = None,
              workers: int = 0, retries: int = 2, progress: bool = False,
-             keep_workdir: bool = False) -> dict:
+             keep_workdir: bool = False, split_vertices: Optional[str] = None) -> dict:
     """Simplifies the file `src` to `ratio` of its faces into `dst`, in tiles.
 
     dst is written in src's own format (.ply, .obj, .off; another is refused before any
@@ -63,6 +63,10 @@ def simplify(src: Union[str, os.PathLike], dst: Union[str, os.PathLike], *, rati
     every worker can reach, or an fsspec URL (s3://bucket/tmp, file:///shared/tmp...): the
     driver then keeps its files in dst's folder and the workers fetch and return tiles.
     progress: print each level's tiles and times to stderr.
+    split_vertices: vertices written twice at one position along a seam, as in
+    vrsimplify.simplify: "seam" (each side keeps its own copies), "weld" (welded freely) or
+    "keep" (left apart, as borders); None chooses as the command line does: "weld" when the
+    vertices hold nothing but a position and no face holds per-corner data, else "seam".
     Returns counts and times; raises ValueError with the reason (a malformed file, a full disk,
     an unwritable work directory) and leaves no output file behind.
     """
@@ -83,7 +87,8 @@ def simplify(src: Union[str, os.PathLike], dst: Union[str, os.PathLike], *, rati
     t0 = time.perf_counter()
     levels = []
     try:
-        level = _core.tiled_begin(src, local, float(ratio), _core.tiled_faces_for_memory(budget))
+        level = _core.tiled_begin(src, local, float(ratio), _core.tiled_faces_for_memory(budget),
+                                  split_vertices or "")
         input_faces = level["faces"]
         while level["tiles"]:
             t, n, k = time.perf_counter(), level["tiles"], level["level"]
@@ -132,6 +137,7 @@ def main(argv=None) -> int:
     p.add_argument("--scheduler", help="a Dask scheduler's address (tcp://host:8786)")
     p.add_argument("--work-dir")
     p.add_argument("--workers", type=int, default=0)
+    p.add_argument("--split-vertices", choices=("seam", "weld", "keep"))
     args = p.parse_args(argv)
     client = None
     if args.scheduler:
@@ -139,7 +145,8 @@ def main(argv=None) -> int:
         client = Client(args.scheduler)
     try:
         r = simplify(args.input, args.output, ratio=args.ratio, memory=args.memory, client=client,
-                     workdir=args.work_dir, workers=args.workers, progress=True)
+                     workdir=args.work_dir, workers=args.workers, progress=True,
+                     split_vertices=args.split_vertices)
     except ValueError as e:
         print(f"vrsimplify: {e}", file=sys.stderr)
         return 1

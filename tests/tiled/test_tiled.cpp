@@ -4,6 +4,7 @@
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <cstdio>
 #include <cstring>
@@ -95,10 +96,11 @@ vrs::Mesh read_output(const std::string& path) {
 }
 
 std::string run(const std::string& in, const std::string& out, double ratio, uint64_t memory,
-                int workers) {
+                int workers, const std::string& split_vertices = "") {
   const std::string dir = out + ".tiles";
   try {
     vrs::tiled::Settings s;
+    s.split_vertices = split_vertices;
     s.ratio = ratio;
     s.faces_per_tile = vrs::tiled::faces_for_memory(memory);
     s.workdir = dir;
@@ -206,6 +208,117 @@ TEST(Tiled, ClosedMeshInManyTilesStaysWatertightAndKeepsInputVertices) {
     EXPECT_EQ(n, 1);
     EXPECT_EQ(directed.count({e.second, e.first}), 1u);
   }
+  vrs::tiled::discard(dir);
+}
+
+// A sphere whose upper faces hold their own copies of the equator's vertices (a seam written
+// as split vertices, positions only): every tile welds the copies it holds, as the in-core run
+// does (the default for a file of positions only, and "weld"), so the equator is simplified
+// with the rest and the output closes by position, every corner on an input vertex, faces
+// crossing the equator where it went; "seam" keeps it as a polyline (simplified along itself,
+// no face across it); "keep" leaves the copies apart as borders (it stays whole); a bad name
+// is refused.
+TEST(Tiled, SplitVerticesAreWeldedTileByTile) {
+  const std::string dir = temp_dir();
+  const vrs::Mesh whole = vrs_test::icosphere(5); // 20 480 faces
+  auto upper = [&](size_t f) {
+    float z = 0;
+    for (int c = 0; c < 3; ++c)
+      z += whole.positions[3 * whole.triangles[3 * f + c] + 2];
+    return z > 0;
+  };
+  vrs::Mesh in = whole;
+  std::vector<uint8_t> used(whole.vertex_count(), 0);
+  for (size_t f = 0; f < whole.face_count(); ++f)
+    for (int c = 0; c < 3; ++c)
+      used[whole.triangles[3 * f + c]] |= upper(f) ? 2 : 1;
+  std::vector<uint32_t> copy(whole.vertex_count(), vrs::kRemoved);
+  size_t equator = 0;
+  for (uint32_t v = 0; v < whole.vertex_count(); ++v)
+    if (used[v] == 3) {
+      copy[v] = uint32_t(in.vertex_count());
+      in.positions.insert(in.positions.end(), &whole.positions[3 * v], &whole.positions[3 * v] + 3);
+      ++equator;
+    }
+  for (size_t f = 0; f < whole.face_count(); ++f)
+    for (int c = 0; c < 3 && upper(f); ++c) {
+      uint32_t& v = in.triangles[3 * f + c];
+      if (copy[v] != vrs::kRemoved) v = copy[v];
+    }
+  ASSERT_GT(equator, 100u);
+  write_ply(dir + "/in.ply", in);
+  std::set<std::array<float, 3>> inputs, on_equator;
+  for (size_t v = 0; v < in.vertex_count(); ++v)
+    inputs.insert({in.positions[3 * v], in.positions[3 * v + 1], in.positions[3 * v + 2]});
+  for (uint32_t v = 0; v < whole.vertex_count(); ++v)
+    if (used[v] == 3)
+      on_equator.insert(
+          {whole.positions[3 * v], whole.positions[3 * v + 1], whole.positions[3 * v + 2]});
+  // Output positions on the equator, and edges by their end positions (closed: each twice).
+  auto equator_kept = [&](const vrs::Mesh& out) {
+    std::set<std::array<float, 3>> kept;
+    for (size_t v = 0; v < out.vertex_count(); ++v) {
+      const std::array<float, 3> p{out.positions[3 * v], out.positions[3 * v + 1],
+                                   out.positions[3 * v + 2]};
+      EXPECT_TRUE(inputs.count(p)) << "output vertex " << v << " is no input vertex";
+      if (on_equator.count(p)) kept.insert(p);
+    }
+    return kept.size();
+  };
+  auto open_edges = [](const vrs::Mesh& out) {
+    std::map<std::array<float, 6>, int> count;
+    for (size_t f = 0; f < out.face_count(); ++f)
+      for (int c = 0; c < 3; ++c) {
+        const float* a = &out.positions[3 * out.triangles[3 * f + c]];
+        const float* b = &out.positions[3 * out.triangles[3 * f + (c + 1) % 3]];
+        if (std::lexicographical_compare(b, b + 3, a, a + 3)) std::swap(a, b);
+        ++count[{a[0], a[1], a[2], b[0], b[1], b[2]}];
+      }
+    size_t open = 0;
+    for (const auto& [e, n] : count)
+      open += n != 2;
+    return open;
+  };
+  // Faces with a corner only the upper faces used and one only the lower ones did.
+  std::map<std::array<float, 3>, uint8_t> side;
+  for (uint32_t v = 0; v < whole.vertex_count(); ++v)
+    side[{whole.positions[3 * v], whole.positions[3 * v + 1], whole.positions[3 * v + 2]}] =
+        used[v];
+  auto across = [&](const vrs::Mesh& out) {
+    size_t n = 0;
+    for (size_t f = 0; f < out.face_count(); ++f) {
+      uint8_t sides = 0;
+      for (int c = 0; c < 3; ++c) {
+        const float* p = &out.positions[3 * out.triangles[3 * f + c]];
+        const uint8_t u = side[{p[0], p[1], p[2]}];
+        sides |= u == 3 ? 0 : u;
+      }
+      n += sides == 3;
+    }
+    return n;
+  };
+  for (const std::string split : {"", "weld"}) {
+    SCOPED_TRACE("split_vertices \"" + split + "\"");
+    // 1.6 MB: tiles of 2 000 faces, a dozen at level 1.
+    ASSERT_EQ(run(dir + "/in.ply", dir + "/out.ply", 0.05, 1600000, 2, split), "");
+    const vrs::Mesh out = read_output(dir + "/out.ply");
+    EXPECT_LE(out.face_count(), size_t(0.05 * 20480 * 1.005 + 2));
+    EXPECT_EQ(open_edges(out), 0u); // no crack along the seam
+    EXPECT_LT(equator_kept(out), equator / 2);
+    EXPECT_GT(across(out), 0u);
+  }
+  ASSERT_EQ(run(dir + "/in.ply", dir + "/seam.ply", 0.05, 1600000, 2, "seam"), "");
+  const vrs::Mesh seam = read_output(dir + "/seam.ply");
+  EXPECT_EQ(open_edges(seam), 0u);
+  EXPECT_LT(equator_kept(seam), equator / 2);
+  EXPECT_EQ(across(seam), 0u);
+  ASSERT_EQ(run(dir + "/in.ply", dir + "/kept.ply", 0.05, 1600000, 2, "keep"), "");
+  const vrs::Mesh kept = read_output(dir + "/kept.ply");
+  EXPECT_EQ(equator_kept(kept), equator);
+  EXPECT_EQ(open_edges(kept), 0u);
+  EXPECT_NE(run(dir + "/in.ply", dir + "/never.ply", 0.05, 1600000, 2, "glue")
+                .find("split_vertices must be seam, weld or keep"),
+            std::string::npos);
   vrs::tiled::discard(dir);
 }
 

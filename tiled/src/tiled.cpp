@@ -2,6 +2,7 @@
 #include "vrs/tiled.h"
 
 #include <algorithm>
+#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -136,6 +137,7 @@ Level begin(const std::string& input, const Settings& settings) {
   // that has any (the faces before it get zero keys then); a mesh without them has none.
   Box box{{HUGE_VALF, HUGE_VALF, HUGE_VALF}, {-HUGE_VALF, -HUGE_VALF, -HUGE_VALF}};
   uint64_t vertices = 0, faces = 0, texcoords = 0, normals = 0;
+  bool vertex_data = false; // a vertex holds more than its position (split vertices: seam)
   int64_t max_index = -1, min_index = 0;
   std::vector<std::string> materials;
   std::unique_ptr<RecordWriter> kout;
@@ -180,6 +182,27 @@ Level begin(const std::string& input, const Settings& settings) {
                                ": run it in core (without a memory budget)");
     };
     sink.material = [&](uint32_t, const std::string& name) { materials.push_back(name); };
+    sink.layout = [&](const Layout& l) {
+      for (const std::string& p : l.vertex_properties) {
+        const size_t end = p.find_last_not_of(" \t\r");
+        const size_t start = p.find_last_of(" \t", end) + 1;
+        const std::string name = end == std::string::npos ? "" : p.substr(start, end + 1 - start);
+        vertex_data |= name != "x" && name != "y" && name != "z";
+      }
+      vertex_data |= l.format == Layout::Format::Off && l.off_keyword != "OFF";
+    };
+    std::string ext = input.substr(input.find_last_of('.') + 1);
+    for (char& c : ext)
+      c = char(std::tolower(static_cast<unsigned char>(c)));
+    if (ext == "obj") // "v x y z [w | r g b]": colours are vertex data (PLY, OFF: their header)
+      sink.raw_vertex = [&](const char* data, size_t size) {
+        if (vertex_data || size < 2 || data[0] != 'v') return;
+        int tokens = 0;
+        for (size_t i = 0; i < size; ++i)
+          tokens += data[i] != ' ' && data[i] != '\t' &&
+                    (i == 0 || data[i - 1] == ' ' || data[i - 1] == '\t');
+        vertex_data = tokens > 5;
+      };
     sink.other_line = [&](const std::string& line) {
       const size_t start = line.find_first_not_of(" \t");
       if (start == std::string::npos) return;
@@ -219,6 +242,10 @@ Level begin(const std::string& input, const Settings& settings) {
   State s;
   s["input"] = input;
   s["keys"] = kout ? "1" : "0";
+  const std::string& split = settings.split_vertices;
+  if (!split.empty() && split != "seam" && split != "weld" && split != "keep")
+    throw std::runtime_error("split_vertices must be seam, weld or keep, got " + split);
+  s["split"] = !split.empty() ? split : vertex_data || kout ? "seam" : "weld";
   s["texcoords"] = num(double(texcoords));
   s["normals"] = num(double(normals));
   s["vertices"] = num(double(vertices));
@@ -320,9 +347,25 @@ void run_tile(const std::string& dir, int level, uint64_t tile, int lone_threads
   const bool serial = s.count("serial") && s.at("serial") == "1";
   opt.threads = alone || serial ? std::max(0, lone_threads) : 1;
   opt.locked = &locked;
-  // Per-corner data: its seams are kept as in core, and each output corner takes the keys of
-  // the input corner the core names.
-  const std::vector<uint32_t> seams = keyed ? tile_seams(mesh, keys) : std::vector<uint32_t>{};
+  // Split vertices as the run was told at its start (an older work directory: seam).
+  const std::string split = s.count("split") ? s.at("split") : "seam";
+  opt.split_vertices = split == "weld"   ? vrs::SplitVertices::Weld
+                       : split == "keep" ? vrs::SplitVertices::Keep
+                                         : vrs::SplitVertices::Seam;
+  // Per-corner data: its seams are kept as in core (welded freely, across split edges too:
+  // the faces read through the copies that stand for them), and each output corner takes the
+  // keys of the input corner the core names.
+  std::vector<uint32_t> seams;
+  if (keyed && opt.split_vertices == vrs::SplitVertices::Weld) {
+    vrs::Mesh welded;
+    const std::vector<uint32_t> standing = vrs::split_vertex_standing(mesh);
+    welded.positions = mesh.positions;
+    for (uint32_t v : mesh.triangles)
+      welded.triangles.push_back(standing[v]);
+    seams = tile_seams(welded, keys);
+  } else if (keyed) {
+    seams = tile_seams(mesh, keys);
+  }
   opt.constrained_edges = keyed ? &seams : nullptr;
   opt.corner_sources = keyed;
   const vrs::Report rep = vrs::simplify(mesh, opt);

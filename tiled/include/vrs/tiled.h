@@ -22,6 +22,10 @@ struct Settings {
   double ratio = 0.5;                // of the input's faces
   uint64_t faces_per_tile = 2000000; // largest tile (faces_for_memory of the budget)
   std::string workdir;               // made if missing; must be writable
+  // Vertices written twice at one position along a seam (vrs::SplitVertices): "seam", "weld"
+  // or "keep"; "" chooses as the CLI does in core: weld when the vertices hold nothing but a
+  // position and no face holds per-corner data, else seam.
+  std::string split_vertices;
 };
 
 struct Level {
