@@ -62,3 +62,17 @@ def _to_triangle(p, a, b, c):
     dist = np.min([np.linalg.norm(p - on_ab, axis=1), np.linalg.norm(p - on_ac, axis=1),
                    np.linalg.norm(p - on_bc, axis=1)], axis=0)
     return np.where(inside, np.linalg.norm(p - q, axis=1), dist)
+
+
+def split_sphere(sphere):
+    """The sphere with its upper faces on copies of the vertices they share with the lower."""
+    v, f = sphere
+    upper = v[f].mean(axis=1)[:, 2] > 0
+    shared = np.intersect1d(f[upper].ravel(), f[~upper].ravel())
+    copy = np.full(len(v), -1)
+    copy[shared] = len(v) + np.arange(len(shared))
+    f2 = f.copy()
+    f2[upper] = np.where(copy[f[upper]] >= 0, copy[f[upper]], f[upper])
+    side = np.zeros(len(v) + len(shared), int)
+    side[f2[upper].ravel()] = 1
+    return np.vstack([v, v[shared]]), f2, len(shared), side

@@ -9,7 +9,7 @@ import numpy as np
 import pytest
 
 import vrsimplify
-from conftest import edge_face_counts, point_triangle_distances
+from conftest import edge_face_counts, point_triangle_distances, split_sphere
 
 
 def check_result(r, v, f):
@@ -232,20 +232,6 @@ def test_bad_input(sphere):
     assert 5 in r.vertex_map
     empty = vrsimplify.simplify(np.zeros((0, 3)), np.zeros((0, 3), np.int64))
     assert len(empty.faces) == 0 and len(empty.vertices) == 0
-
-
-def split_sphere(sphere):
-    """The sphere with its upper faces on copies of the vertices they share with the lower."""
-    v, f = sphere
-    upper = v[f].mean(axis=1)[:, 2] > 0
-    shared = np.intersect1d(f[upper].ravel(), f[~upper].ravel())
-    copy = np.full(len(v), -1)
-    copy[shared] = len(v) + np.arange(len(shared))
-    f2 = f.copy()
-    f2[upper] = np.where(copy[f[upper]] >= 0, copy[f[upper]], f[upper])
-    side = np.zeros(len(v) + len(shared), int)
-    side[f2[upper].ravel()] = 1
-    return np.vstack([v, v[shared]]), f2, len(shared), side
 
 
 def test_split_vertices_are_welded_for_the_run_and_split_again(sphere):

@@ -15,7 +15,7 @@ import pytest
 import trimesh
 
 import vrsimplify.tiled
-from conftest import edge_face_counts
+from conftest import edge_face_counts, split_sphere
 
 PLY_FACE = np.dtype([("n", "u1"), ("v", "<i4", (3,))])
 
@@ -198,17 +198,10 @@ def test_split_vertices_are_welded_in_the_tiles_as_in_core(tmp_path):
     # only): welded by default (as the in-core run of such a file), so the equator goes with
     # the rest and the output closes by position; "keep" leaves the copies apart, as borders.
     m = trimesh.creation.icosphere(subdivisions=5)
-    v, f = m.vertices.astype(np.float32), np.asarray(m.faces)
-    upper = v[f].mean(axis=1)[:, 2] > 0
-    seam = np.intersect1d(f[upper].ravel(), f[~upper].ravel())
-    copy = np.full(len(v), -1)
-    copy[seam] = len(v) + np.arange(len(seam))
-    f = f.copy()
-    f[upper] = np.where(copy[f[upper]] >= 0, copy[f[upper]], f[upper])
-    v = np.vstack([v, v[seam]])
+    v, f, seam, _ = split_sphere((m.vertices.astype(np.float32), np.asarray(m.faces)))
     src = tmp_path / "split.ply"
     trimesh.Trimesh(v, f, process=False).export(src)
-    equator = {tuple(p) for p in v[seam].tolist()}
+    equator = {tuple(p) for p in v[-seam:].tolist()}
 
     def run(name, **kw):
         out = tmp_path / name

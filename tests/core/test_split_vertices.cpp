@@ -51,20 +51,6 @@ bool upper(const Mesh& m, size_t f) {
   return z > 0;
 }
 
-// Edges by their two end positions, counted over the faces: a surface closed by position has
-// every one twice.
-std::map<std::array<float, 6>, int> edges_by_position(const Mesh& m) {
-  std::map<std::array<float, 6>, int> count;
-  for (size_t f = 0; f < m.face_count(); ++f)
-    for (int c = 0; c < 3; ++c) {
-      const float* a = &m.positions[3 * m.triangles[3 * f + c]];
-      const float* b = &m.positions[3 * m.triangles[3 * f + (c + 1) % 3]];
-      if (std::lexicographical_compare(b, b + 3, a, a + 3)) std::swap(a, b);
-      ++count[{a[0], a[1], a[2], b[0], b[1], b[2]}];
-    }
-  return count;
-}
-
 // Output vertex -> input vertex.
 std::vector<uint32_t> input_of(const Report& r, size_t out_vertices) {
   std::vector<uint32_t> in(out_vertices, kRemoved);
@@ -103,7 +89,7 @@ TEST(SplitVertices, ASeamIsSimplifiedAsOneSurfaceAndEachSideKeepsItsCopies) {
       for (int c = 1; c < 3; ++c)
         EXPECT_EQ(side[from[out.triangles[3 * f + c]]], s) << "face " << f << " spans the seam";
     }
-    for (const auto& [edge, n] : edges_by_position(out))
+    for (const auto& [edge, n] : vrs_test::edges_by_position(out))
       ASSERT_EQ(n, 2) << "a crack along the seam";
   }
 }
@@ -133,7 +119,7 @@ TEST(SplitVertices, ASoupOfFacesIsWeldedIntoItsSurface) {
   EXPECT_EQ(r.welded_vertices, in.vertex_count() - vrs_test::icosphere(2).vertex_count());
   EXPECT_TRUE(r.target_reached) << r.stop_detail;
   EXPECT_EQ(vrs_test::check_run(in, out, o, r), "");
-  for (const auto& [edge, n] : edges_by_position(out))
+  for (const auto& [edge, n] : vrs_test::edges_by_position(out))
     ASSERT_EQ(n, 2) << "the output is not closed";
   // Each corner is the copy its input corner had.
   const auto from = input_of(r, out.vertex_count());

@@ -542,4 +542,16 @@ bool stops_faithfully(const std::string& stop_detail) {
          stop_detail.find("would change abruptly") != std::string::npos;
 }
 
+std::map<std::array<float, 6>, int> edges_by_position(const vrs::Mesh& m) {
+  std::map<std::array<float, 6>, int> count;
+  for (size_t f = 0; f < m.face_count(); ++f)
+    for (int c = 0; c < 3; ++c) {
+      const float* a = &m.positions[3 * m.triangles[3 * f + c]];
+      const float* b = &m.positions[3 * m.triangles[3 * f + (c + 1) % 3]];
+      if (std::lexicographical_compare(b, b + 3, a, a + 3)) std::swap(a, b);
+      ++count[{a[0], a[1], a[2], b[0], b[1], b[2]}];
+    }
+  return count;
+}
+
 } // namespace vrs_test

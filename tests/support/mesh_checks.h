@@ -1,6 +1,8 @@
 // The invariants a simplification must keep, measured on a (input, output, report) triple.
 #pragma once
 
+#include <array>
+#include <map>
 #include <string>
 #include <vector>
 
@@ -43,6 +45,9 @@ size_t count_flipped_new(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::R
 std::vector<long> component_euler(const vrs::Mesh& m);
 // Same positions bit for bit (NaN included) and same triangles.
 bool same_bits(const vrs::Mesh& a, const vrs::Mesh& b);
+// Edges by their two end positions (lower first), counted over the faces: a surface closed by
+// position has every one twice, however its vertices are split.
+std::map<std::array<float, 6>, int> edges_by_position(const vrs::Mesh& m);
 // Reverses faces so that neighbours agree on the orientation (each connected piece keeps the
 // one most of its faces had): the reference for the core's Report::reoriented_faces. Returns
 // the number reversed.

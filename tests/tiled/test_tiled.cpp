@@ -18,6 +18,7 @@
 
 #include <unistd.h>
 
+#include "mesh_checks.h"
 #include "mesh_stream.h"
 #include "test_meshes.h"
 #include "vrs/tiled.h"
@@ -266,16 +267,8 @@ TEST(Tiled, SplitVerticesAreWeldedTileByTile) {
     return kept.size();
   };
   auto open_edges = [](const vrs::Mesh& out) {
-    std::map<std::array<float, 6>, int> count;
-    for (size_t f = 0; f < out.face_count(); ++f)
-      for (int c = 0; c < 3; ++c) {
-        const float* a = &out.positions[3 * out.triangles[3 * f + c]];
-        const float* b = &out.positions[3 * out.triangles[3 * f + (c + 1) % 3]];
-        if (std::lexicographical_compare(b, b + 3, a, a + 3)) std::swap(a, b);
-        ++count[{a[0], a[1], a[2], b[0], b[1], b[2]}];
-      }
     size_t open = 0;
-    for (const auto& [e, n] : count)
+    for (const auto& [e, n] : vrs_test::edges_by_position(out))
       open += n != 2;
     return open;
   };
