@@ -247,9 +247,9 @@ struct Report {
   // veto alone, or at a price jump, see max_price_jump) or lifted by the last resort: when
   // nothing else was left to remove and a count target was not met, a new triangle has to
   // face the input's side at one of its corners only,
-  // single triangles (and the factor's outline corners) may go, and where every fan and the projection of an interior vertex is
-  // refused, the ring's triangulation that stands nearest the old fan, of those no veto
-  // refuses, is taken. It still may not fold over the faces it replaces.
+  // single triangles (and the factor's outline corners) may go, and where every fan and the
+  // projection of an interior vertex is refused, the ring's triangulation that stands nearest the
+  // old fan, of those no veto refuses, is taken. It still may not fold over the faces it replaces.
   size_t relaxed_removals = 0;
   // Options::simplify_boundary_when_needed acted: the kept border alone needed more than a
   // quarter of the faces asked for, so border vertices were removed too.
