@@ -497,10 +497,7 @@ int main(int argc, char** argv) {
     seams = vrs_tool::seams(*loaded.doc, mesh);
   } else {
     vrs::Mesh welded;
-    const std::vector<uint32_t> standing = vrs::split_vertex_standing(mesh);
-    welded.triangles.reserve(mesh.triangles.size());
-    for (uint32_t v : mesh.triangles)
-      welded.triangles.push_back(standing[v]);
+    welded.triangles = vrs::split_vertex_welded_triangles(mesh);
     seams = vrs_tool::seams(*loaded.doc, welded);
   }
   opt.constrained_edges = &seams;

@@ -204,15 +204,10 @@ Welding weld_split_vertices(std::vector<uint32_t>& tris, const std::vector<float
   return w;
 }
 
-std::vector<uint32_t> split_vertex_standing(const Mesh& mesh) {
+std::vector<uint32_t> split_vertex_welded_triangles(const Mesh& mesh) {
   std::vector<uint32_t> tris = mesh.triangles;
-  Welding w = weld_split_vertices(tris, mesh.positions);
-  if (w.rep.empty()) {
-    w.rep.resize(mesh.vertex_count());
-    for (size_t v = 0; v < w.rep.size(); ++v)
-      w.rep[v] = uint32_t(v);
-  }
-  return w.rep;
+  weld_split_vertices(tris, mesh.positions);
+  return tris;
 }
 
 } // namespace vrs

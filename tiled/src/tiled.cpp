@@ -2,7 +2,6 @@
 #include "vrs/tiled.h"
 
 #include <algorithm>
-#include <cctype>
 #include <cerrno>
 #include <cmath>
 #include <cstring>
@@ -191,10 +190,8 @@ Level begin(const std::string& input, const Settings& settings) {
       }
       vertex_data |= l.format == Layout::Format::Off && l.off_keyword != "OFF";
     };
-    std::string ext = input.substr(input.find_last_of('.') + 1);
-    for (char& c : ext)
-      c = char(std::tolower(static_cast<unsigned char>(c)));
-    if (ext == "obj") // "v x y z [w | r g b]": colours are vertex data (PLY, OFF: their header)
+    // OBJ: "v x y z [w | r g b]", colours are vertex data (PLY, OFF: their header says).
+    if (format_of(input) == "obj")
       sink.raw_vertex = [&](const char* data, size_t size) {
         if (vertex_data || size < 2 || data[0] != 'v') return;
         int tokens = 0;
@@ -357,11 +354,8 @@ void run_tile(const std::string& dir, int level, uint64_t tile, int lone_threads
   // keys of the input corner the core names.
   std::vector<uint32_t> seams;
   if (keyed && opt.split_vertices == vrs::SplitVertices::Weld) {
-    vrs::Mesh welded;
-    const std::vector<uint32_t> standing = vrs::split_vertex_standing(mesh);
-    welded.positions = mesh.positions;
-    for (uint32_t v : mesh.triangles)
-      welded.triangles.push_back(standing[v]);
+    vrs::Mesh welded; // tile_seams reads the faces only
+    welded.triangles = vrs::split_vertex_welded_triangles(mesh);
     seams = tile_seams(welded, keys);
   } else if (keyed) {
     seams = tile_seams(mesh, keys);

@@ -286,10 +286,11 @@ Report simplify(Mesh& mesh, const Options& options);
 // the unit of relative errors (CLI --max-error E%, the plugin's MaxError, the benchmark).
 double bounding_box_diagonal(const Mesh& mesh);
 
-// For each vertex, the copy a run with split_vertices Seam or Weld welds it to (itself when
-// none): an adapter that finds seams in per-corner data finds them across split edges too when
-// it reads the faces through this (the command-line tool does, then runs Weld).
-std::vector<uint32_t> split_vertex_standing(const Mesh& mesh);
+// The faces as a run with split_vertices Seam or Weld reads them: each corner on the copy that
+// stands for its vertex (the input's triangles when nothing is split). An adapter that finds
+// seams in per-corner data finds them across split edges too when it reads the faces so (the
+// command-line tool and tiled runs do, then run Weld).
+std::vector<uint32_t> split_vertex_welded_triangles(const Mesh& mesh);
 
 // Short parsers used by the adapters (CLI, plugin): false on an unknown name.
 bool parse_mode(const std::string& s, Mode& out);
