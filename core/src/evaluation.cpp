@@ -1,6 +1,7 @@
 #include "evaluation.h"
 
 #include <algorithm>
+#include <array>
 #include <limits>
 
 namespace vrs {
@@ -12,44 +13,53 @@ double distance_to_line(Vec3 p, Vec3 a, Vec3 b) {
   return length(cross(p - a, d)) / std::sqrt(l2);
 }
 
-std::vector<float> vertex_normals(const std::vector<float>& pos,
-                                  const std::vector<uint32_t>& tris) {
+void vertex_cone(const float* pos, const uint32_t* tris, const Topology& topo, uint32_t v,
+                 float* cone, float* fan_area) {
   // Each face adds its unit normal. Area weights in float underflow to nothing for the small
   // faces of a mesh that also holds one huge coordinate (found by the fuzzer: a face flipped
-  // against a vertex whose normal had vanished).
-  auto at = [&](uint32_t v) { return Vec3{pos[3 * v], pos[3 * v + 1], pos[3 * v + 2]}; };
-  const size_t count = pos.size() / 3;
-  std::vector<float> n(4 * count, 0.0f);
-  auto face_normal = [&](size_t i) {
-    const Vec3 a = at(tris[i]);
-    return normalized(cross(at(tris[i + 1]) - a, at(tris[i + 2]) - a));
+  // against a vertex whose normal had vanished). The faces in the order topology lists them
+  // (the input's): the same float sums on any number of threads.
+  auto at = [&](uint32_t u) { return Vec3{pos[3 * u], pos[3 * u + 1], pos[3 * u + 2]}; };
+  auto face_cross = [&](uint32_t f) {
+    const Vec3 a = at(tris[3 * size_t(f)]);
+    return cross(at(tris[3 * size_t(f) + 1]) - a, at(tris[3 * size_t(f) + 2]) - a);
   };
-  for (size_t i = 0; i + 2 < tris.size(); i += 3) {
-    const Vec3 u = face_normal(i);
-    for (int k = 0; k < 3; ++k) {
-      float* s = &n[4 * size_t(tris[i + k])];
-      s[0] += float(u.x), s[1] += float(u.y), s[2] += float(u.z);
-    }
+  constexpr uint32_t kKept = 32; // the first faces' normals, kept for the second loop
+  std::array<Vec3, kKept> kept;
+  const uint32_t* faces = topo.faces_of(v);
+  const uint32_t count = topo.valence(v);
+  float s[3] = {0, 0, 0};
+  float area = 0;
+  for (uint32_t i = 0; i < count; ++i) {
+    const Vec3 c = face_cross(faces[i]);
+    const Vec3 u = normalized(c);
+    if (i < kKept) kept[i] = u;
+    s[0] += float(u.x), s[1] += float(u.y), s[2] += float(u.z);
+    area += float(0.5 * length(c));
   }
-  std::vector<float> least(count, 1.0f); // per vertex: least cosine between normal and a face
-  for (size_t v = 0; v < count; ++v) {
-    // Faces that cancel out (a fin, a sheet folded onto itself) leave a rounding residue whose
-    // direction means nothing: no normal there (found by the fuzzer).
-    float* s = &n[4 * v];
-    Vec3 sum{s[0], s[1], s[2]};
-    Vec3 u = length(sum) > kMinNormalSum ? normalized(sum) : Vec3{};
-    s[0] = float(u.x), s[1] = float(u.y), s[2] = float(u.z);
-  }
-  for (size_t i = 0; i + 2 < tris.size(); i += 3) {
-    const Vec3 u = face_normal(i);
-    for (int k = 0; k < 3; ++k) {
-      const float* s = &n[4 * size_t(tris[i + k])];
-      float& l = least[tris[i + k]];
-      l = std::min(l, float(dot(u, Vec3{s[0], s[1], s[2]})));
-    }
-  }
-  for (size_t v = 0; v < count; ++v) // the sine of the cone's half-angle, 1 past 90 degrees
-    n[4 * v + 3] = least[v] > 0 ? std::sqrt(std::max(0.0f, 1 - least[v] * least[v])) : 1.0f;
+  if (fan_area) *fan_area = area;
+  // Faces that cancel out (a fin, a sheet folded onto itself) leave a rounding residue whose
+  // direction means nothing: no normal there (found by the fuzzer).
+  const Vec3 sum{s[0], s[1], s[2]};
+  const Vec3 u = length(sum) > kMinNormalSum ? normalized(sum) : Vec3{};
+  cone[0] = float(u.x), cone[1] = float(u.y), cone[2] = float(u.z);
+  const Vec3 axis{cone[0], cone[1], cone[2]};
+  float least = 1.0f; // least cosine between the normal and a face
+  for (uint32_t i = 0; i < count; ++i)
+    least =
+        std::min(least, float(dot(i < kKept ? kept[i] : normalized(face_cross(faces[i])), axis)));
+  // The sine of the cone's half-angle, 1 past 90 degrees.
+  cone[3] = least > 0 ? std::sqrt(std::max(0.0f, 1 - least * least)) : 1.0f;
+}
+
+std::vector<float> vertex_normals(const std::vector<float>& pos,
+                                  const std::vector<uint32_t>& tris) {
+  const size_t count = pos.size() / 3;
+  Topology topo;
+  topo.build(tris, count);
+  std::vector<float> n(4 * count);
+  for (size_t v = 0; v < count; ++v)
+    vertex_cone(pos.data(), tris.data(), topo, uint32_t(v), &n[4 * v], nullptr);
   return n;
 }
 

@@ -60,6 +60,11 @@ double distance_to_line(Vec3 p, Vec3 a, Vec3 b);
 constexpr double kMinNormalSum = 1e-3;
 std::vector<float> vertex_normals(const std::vector<float>& positions,
                                   const std::vector<uint32_t>& triangles);
+// One vertex's cone (4 floats at `cone`) from its faces in `topo`, and the sum of their areas
+// (its fan's) at `fan_area` when given: what vertex_normals() computes for it, vertex by
+// vertex, so that threads can share the vertices out.
+void vertex_cone(const float* positions, const uint32_t* triangles, const Topology& topo,
+                 uint32_t v, float* cone, float* fan_area);
 
 // Unit normal of the whole mesh (area weighted), the plane of Planar2D.
 Vec3 mesh_plane_normal(const float* positions, const std::vector<uint32_t>& triangles);

@@ -6,8 +6,35 @@
 
 namespace vrs {
 
+namespace {
+
+// Blocks of consecutive input indices: each counts what it keeps, a prefix over the blocks says
+// where each writes, and the blocks then write at once (the same output on any threads).
+constexpr size_t kBlock = 65536;
+
+// starts[b]: where block b of [0, n) writes, from kept(i) over the indices; starts[blocks]: all.
+template <class Kept>
+std::vector<uint32_t> block_starts(Workers* workers, size_t n, const Kept& kept) {
+  const size_t blocks = (n + kBlock - 1) / kBlock;
+  std::vector<uint32_t> starts(blocks + 1, 0);
+  for_each_on(
+      workers, blocks,
+      [&](size_t b) {
+        uint32_t count = 0;
+        for (size_t i = b * kBlock; i < std::min(n, (b + 1) * kBlock); ++i)
+          count += kept(i);
+        starts[b + 1] = count;
+      },
+      1);
+  for (size_t b = 0; b < blocks; ++b)
+    starts[b + 1] += starts[b];
+  return starts;
+}
+
+} // namespace
+
 void write_output(Mesh& mesh, const SpatialOrder& order, const std::vector<uint8_t>& removed,
-                  const SlotRecords& records, Report& rep) {
+                  const SlotRecords& records, Report& rep, Workers* workers) {
   const size_t n = mesh.vertex_count();
   auto& pos = mesh.positions;
   const auto& face_source = records.face_source;
@@ -15,47 +42,69 @@ void write_output(Mesh& mesh, const SpatialOrder& order, const std::vector<uint8
   const auto& face_bound = records.face_bound;
   rep.remap.assign(n, kRemoved);
   std::vector<uint32_t> out_index(n, kRemoved); // internal vertex -> output index
-  std::vector<float> kept;
-  kept.reserve(pos.size());
-  uint32_t next = 0;
-  for (size_t i = 0; i < n; ++i) {
-    const uint32_t v = order.vertex_new[i];
-    if (removed[v]) continue;
-    kept.insert(kept.end(), &pos[3 * size_t(v)], &pos[3 * size_t(v)] + 3);
-    rep.remap[i] = out_index[v] = next++;
-  }
+  const auto vstarts =
+      block_starts(workers, n, [&](size_t i) { return !removed[order.vertex_new[i]]; });
+  std::vector<float> kept(3 * size_t(vstarts.back()));
+  for_each_on(
+      workers, vstarts.size() - 1,
+      [&](size_t b) {
+        uint32_t next = vstarts[b];
+        for (size_t i = b * kBlock; i < std::min(n, (b + 1) * kBlock); ++i) {
+          const uint32_t v = order.vertex_new[i];
+          if (removed[v]) continue;
+          std::copy_n(&pos[3 * size_t(v)], 3, &kept[3 * size_t(next)]);
+          rep.remap[i] = out_index[v] = next++;
+        }
+      },
+      1);
   pos.swap(kept);
   std::vector<float>().swap(kept);
 
   auto& tris = mesh.triangles;
   const size_t slots = tris.size() / 3;
   std::vector<uint32_t> slot_of(slots); // input slot -> internal slot
-  for (size_t f = 0; f < slots; ++f)
-    slot_of[order.face_old[f]] = uint32_t(f);
-  std::vector<uint32_t> out;
-  out.reserve(tris.size());
-  rep.face_source.clear();
-  rep.corner_source.clear();
-  for (size_t j = 0; j < slots; ++j) {
-    const size_t f = slot_of[j];
-    if (tris[3 * f] == kNone) continue;
-    rep.face_source.push_back(face_source[f]);
-    if (!face_bound.empty()) rep.error_bound = std::max(rep.error_bound, double(face_bound[f]));
-    if (!corner_source.empty())
-      rep.corner_source.insert(rep.corner_source.end(), &corner_source[3 * f],
-                               &corner_source[3 * f] + 3);
-    for (int c = 0; c < 3; ++c) {
-      uint32_t v = tris[3 * f + c];
-      if (!records.corners.empty()) { // welded: the copy the input corner had
-        const uint32_t own = records.corners[corner_source[3 * f + c]];
-        if (order.vertex_new[records.standing[own]] == v) v = order.vertex_new[own];
-      }
-      out.push_back(out_index[v]);
-    }
-  }
+  for_each_on(
+      workers, (slots + kBlock - 1) / kBlock,
+      [&](size_t b) {
+        for (size_t f = b * kBlock; f < std::min(slots, (b + 1) * kBlock); ++f)
+          slot_of[order.face_old[f]] = uint32_t(f);
+      },
+      1);
+  const auto fstarts =
+      block_starts(workers, slots, [&](size_t j) { return tris[3 * size_t(slot_of[j])] != kNone; });
+  const size_t faces = fstarts.back();
+  std::vector<uint32_t> out(3 * faces);
+  rep.face_source.assign(faces, 0);
+  rep.corner_source.assign(corner_source.empty() ? 0 : 3 * faces, 0);
+  std::vector<float> bound(fstarts.size() - 1, 0.0f); // each block's largest
+  for_each_on(
+      workers, fstarts.size() - 1,
+      [&](size_t b) {
+        size_t at = fstarts[b];
+        for (size_t j = b * kBlock; j < std::min(slots, (b + 1) * kBlock); ++j) {
+          const size_t f = slot_of[j];
+          if (tris[3 * f] == kNone) continue;
+          rep.face_source[at] = face_source[f];
+          if (!face_bound.empty()) bound[b] = std::max(bound[b], face_bound[f]);
+          if (!corner_source.empty())
+            std::copy_n(&corner_source[3 * f], 3, &rep.corner_source[3 * at]);
+          for (int c = 0; c < 3; ++c) {
+            uint32_t v = tris[3 * f + c];
+            if (!records.corners.empty()) { // welded: the copy the input corner had
+              const uint32_t own = records.corners[corner_source[3 * f + c]];
+              if (order.vertex_new[records.standing[own]] == v) v = order.vertex_new[own];
+            }
+            out[3 * at + c] = out_index[v];
+          }
+          ++at;
+        }
+      },
+      1);
+  for (float x : bound)
+    rep.error_bound = std::max(rep.error_bound, double(x));
   tris.swap(out);
   rep.faces = tris.size() / 3;
-  rep.vertices = next;
+  rep.vertices = vstarts.back();
 }
 
 std::string input_warnings(const Report& r) {
@@ -82,7 +131,8 @@ void Simplifier::compact() {
   for (size_t i = 0; i < welding_.rep.size(); ++i)
     removed[order_.vertex_new[i]] = removed[order_.vertex_new[welding_.rep[i]]];
   write_output(mesh_, order_, removed,
-               {face_source_, corner_source_, face_bound_, welding_.corners, welding_.rep}, rep_);
+               {face_source_, corner_source_, face_bound_, welding_.corners, welding_.rep}, rep_,
+               &workers_);
   if (!opt_.corner_sources) std::vector<uint32_t>().swap(rep_.corner_source);
 }
 

@@ -8,6 +8,7 @@
 
 #include "spatial_order.h"
 #include "vrs/simplify.h"
+#include "workers.h"
 
 namespace vrs {
 
@@ -25,9 +26,10 @@ struct SlotRecords {
 
 // Rewrites `mesh` (internal order, dead slots holding kNone) as its live part in the input's
 // order: vertices by input index (`removed[v]` nonzero: gone), faces by the input slot they
-// took. Fills rep's remap, face_source, corner_source, error_bound, faces and vertices.
+// took. Fills rep's remap, face_source, corner_source, error_bound, faces and vertices. On the
+// workers when given (the same output on any number).
 void write_output(Mesh& mesh, const SpatialOrder& order, const std::vector<uint8_t>& removed,
-                  const SlotRecords& records, Report& rep);
+                  const SlotRecords& records, Report& rep, Workers* workers = nullptr);
 
 // The input's problems the run worked around ("3 faces with a repeated vertex dropped; ...").
 std::string input_warnings(const Report& r);

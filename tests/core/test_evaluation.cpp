@@ -129,6 +129,43 @@ TEST(Evaluation, VertexNormalsOfASpherePointOutwardEvenAtHugeScale) {
   }
 }
 
+TEST(Evaluation, VertexConesSumTheFacesInTheInputsOrderBitForBit) {
+  // Vertex by vertex (what the threads share out), the sums are the ones a single pass over
+  // the faces in order makes: float additions in the same order, the same bits.
+  const std::string path = vrs_test::cgal_mesh("elephant.off");
+  if (path.empty()) GTEST_FAIL() << "elephant.off missing: run scripts/setup.sh";
+  const Mesh m = vrs_test::read_off(path);
+  const size_t n = m.vertex_count();
+  std::vector<float> sum(3 * n, 0.0f), area(n, 0.0f);
+  auto at = [&](uint32_t v) {
+    return Vec3{m.positions[3 * v], m.positions[3 * v + 1], m.positions[3 * v + 2]};
+  };
+  for (size_t i = 0; i < m.triangles.size(); i += 3) {
+    const Vec3 a = at(m.triangles[i]);
+    const Vec3 c = cross(at(m.triangles[i + 1]) - a, at(m.triangles[i + 2]) - a);
+    const Vec3 u = normalized(c);
+    for (int k = 0; k < 3; ++k) {
+      float* s = &sum[3 * size_t(m.triangles[i + k])];
+      s[0] += float(u.x), s[1] += float(u.y), s[2] += float(u.z);
+      area[m.triangles[i + k]] += float(0.5 * length(c));
+    }
+  }
+  Topology topo;
+  topo.build(m.triangles, n);
+  const std::vector<float> cones = vertex_normals(m.positions, m.triangles);
+  for (uint32_t v = 0; v < n; ++v) {
+    float cone[4], fan_area = -1;
+    vertex_cone(m.positions.data(), m.triangles.data(), topo, v, cone, &fan_area);
+    const Vec3 u = normalized(Vec3{sum[3 * v], sum[3 * v + 1], sum[3 * v + 2]});
+    ASSERT_EQ(cone[0], float(u.x)) << v;
+    ASSERT_EQ(cone[1], float(u.y)) << v;
+    ASSERT_EQ(cone[2], float(u.z)) << v;
+    ASSERT_EQ(fan_area, area[v]) << v;
+    for (int k = 0; k < 4; ++k)
+      ASSERT_EQ(cone[k], cones[4 * v + k]) << v;
+  }
+}
+
 TEST(Evaluation, TripleSubsetStaysCloseToAllTriplesOnARealMesh) {
   // Measures what the subset above the cap costs: on armadillo (CGAL data), for every vertex
   // of valence 5..10, the factor from the 2k-triple subset against the one from all triples.

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <cmath>
 
 #include "mesh_checks.h"
 #include "test_meshes.h"
@@ -79,6 +80,28 @@ TEST(Threads, SameOutputAndReportWhateverTheThreadCount) {
                     c.name + " variant " + std::to_string(variant) + ", " +
                         std::to_string(threads) + " threads against 1");
     }
+}
+
+TEST(Threads, AMeshOfManyBlocksIsSetUpAndWrittenTheSameWhateverTheThreadCount) {
+  // More vertices and faces than one block of the set-up's and the output's loops (65 536),
+  // so that the threads share them out; the certified bound and the corners' sources are
+  // gathered block by block too.
+  const Mesh in = vrs_test::terrain(300);
+  ASSERT_GT(in.vertex_count(), 65536u);
+  Options o;
+  o.target.ratio = 0.3;
+  o.corner_sources = true;
+  o.max_error = HUGE_VAL; // the bound tracked, not limiting (as --error-bound does)
+  const Outcome one = run(in, o, 1);
+  ASSERT_TRUE(one.report.ok) << one.report.message;
+  ASSERT_EQ(vrs_test::check_run(in, one.mesh, o, one.report), "");
+  EXPECT_GT(one.report.error_bound, 0);
+  for (int threads : {2, 3}) {
+    const Outcome other = run(in, o, threads);
+    expect_same(one, other, std::to_string(threads) + " threads against 1");
+    EXPECT_EQ(one.report.remap, other.report.remap);
+    EXPECT_EQ(one.report.error_bound, other.report.error_bound);
+  }
 }
 
 TEST(Threads, CancellingStopsAtTheSameRemovalWhateverTheThreadCount) {
