@@ -575,6 +575,79 @@ TEST(Tiled, CornerDataAndMaterialsStayWithTheirChart) {
   vrs::tiled::discard(dir);
 }
 
+// Flat shading (every face's corners name one vn line, its own normal) holds nothing the
+// geometry does not, as in core: no edge is a seam, the tiles are those of the mesh without
+// normals (the same output faces), and each output face is given its own unit normal. (Taken
+// as per-corner keys, every edge had been a seam and nothing was removed: 12 946 -> 12 946.)
+TEST(Tiled, FlatShadedObjIsSimplifiedAsWithoutNormalsAndFacesGetTheirOwn) {
+  const std::string dir = temp_dir();
+  const vrs::Mesh m = vrs_test::icosphere(5);
+  std::ostringstream plain, flat;
+  for (size_t v = 0; v < m.vertex_count(); ++v) {
+    char line[96];
+    std::snprintf(line, sizeof line, "v %.9g %.9g %.9g\n", double(m.positions[3 * v]),
+                  double(m.positions[3 * v + 1]), double(m.positions[3 * v + 2]));
+    plain << line;
+    flat << line;
+  }
+  auto at = [](const float* p) { return std::array<double, 3>{p[0], p[1], p[2]}; };
+  auto unit_normal = [](std::array<double, 3> a, std::array<double, 3> b, std::array<double, 3> c) {
+    const double u[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]},
+                 w[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    std::array<double, 3> n{u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2],
+                            u[0] * w[1] - u[1] * w[0]};
+    const double l = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+    for (double& x : n)
+      x /= l;
+    return n;
+  };
+  for (size_t t = 0; t < m.face_count(); ++t) {
+    const uint32_t* f = &m.triangles[3 * t];
+    const auto n = unit_normal(at(&m.positions[3 * f[0]]), at(&m.positions[3 * f[1]]),
+                               at(&m.positions[3 * f[2]]));
+    flat << "vn " << n[0] << " " << n[1] << " " << n[2] << "\n";
+    plain << "f " << f[0] + 1 << " " << f[1] + 1 << " " << f[2] + 1 << "\n";
+    flat << "f " << f[0] + 1 << "//" << t + 1 << " " << f[1] + 1 << "//" << t + 1 << " " << f[2] + 1
+         << "//" << t + 1 << "\n";
+  }
+  std::ofstream(dir + "/plain.obj") << plain.str();
+  std::ofstream(dir + "/flat.obj") << flat.str();
+  ASSERT_EQ(run(dir + "/plain.obj", dir + "/plain_out.obj", 0.1, 1000000, 2), "");
+  ASSERT_EQ(run(dir + "/flat.obj", dir + "/flat_out.obj", 0.1, 1000000, 2), "");
+  std::vector<std::string> plain_lines, flat_lines; // v and f lines, normals left out
+  std::vector<std::array<double, 3>> v, vn;
+  size_t faces = 0, wrong = 0;
+  for (const std::string& l : lines_of(slurp(dir + "/plain_out.obj")))
+    if (l.rfind("v ", 0) == 0 || l.rfind("f ", 0) == 0) plain_lines.push_back(l);
+  for (const std::string& l : lines_of(slurp(dir + "/flat_out.obj"))) {
+    std::array<double, 3> x;
+    if (l.rfind("v ", 0) == 0 || l.rfind("vn ", 0) == 0) {
+      ASSERT_EQ(std::sscanf(l.c_str() + l.find(' '), "%lf %lf %lf", &x[0], &x[1], &x[2]), 3) << l;
+      (l[1] == 'n' ? vn : v).push_back(x);
+    }
+    if (l.rfind("v ", 0) == 0) flat_lines.push_back(l);
+    if (l.rfind("f ", 0) != 0) continue;
+    unsigned a[3], n[3];
+    ASSERT_EQ(
+        std::sscanf(l.c_str(), "f %u//%u %u//%u %u//%u", &a[0], &n[0], &a[1], &n[1], &a[2], &n[2]),
+        6)
+        << l;
+    flat_lines.push_back("f " + std::to_string(a[0]) + " " + std::to_string(a[1]) + " " +
+                         std::to_string(a[2]));
+    ++faces;
+    ASSERT_TRUE(n[0] == n[1] && n[1] == n[2] && n[0] >= 1 && n[0] <= vn.size()) << l;
+    ASSERT_TRUE(a[0] <= v.size() && a[1] <= v.size() && a[2] <= v.size()) << l;
+    const auto own = unit_normal(v[a[0] - 1], v[a[1] - 1], v[a[2] - 1]);
+    const auto& given = vn[n[0] - 1];
+    wrong += !(own[0] * given[0] + own[1] * given[1] + own[2] * given[2] > 1 - 1e-5);
+  }
+  EXPECT_EQ(flat_lines, plain_lines) << "flat normals changed which vertices and faces are kept";
+  EXPECT_LE(faces, size_t(0.1 * double(m.face_count()) * 1.005 + 2));
+  EXPECT_GE(faces, size_t(0.1 * double(m.face_count()) * 0.9));
+  EXPECT_EQ(wrong, 0u) << "output faces whose normal is not their own";
+  vrs::tiled::discard(dir);
+}
+
 // What a tiled run cannot carry is refused before any tile runs, by name; never dropped.
 TEST(Tiled, WhatCannotBeCarriedIsRefusedByName) {
   const std::string dir = temp_dir();

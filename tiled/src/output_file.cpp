@@ -3,6 +3,7 @@
 #include <cctype>
 #include <cerrno>
 #include <climits>
+#include <cmath>
 #include <cstdlib>
 #include <cstring>
 #include <memory>
@@ -121,7 +122,7 @@ std::string format_of(const std::string& path) {
 }
 
 uint64_t write_output(const std::string& input, const std::string& output, uint64_t vertices,
-                      uint64_t texcoords, uint64_t normals,
+                      uint64_t texcoords, uint64_t normals, bool flat_normals,
                       const std::vector<std::string>& materials, const FaceSource& faces) {
   const std::string format = format_of(input);
   if (format.empty() || format != format_of(output))
@@ -129,7 +130,7 @@ uint64_t write_output(const std::string& input, const std::string& output, uint6
                              "): cannot write " + output);
   // Which vertices (and OBJ vt, vn lines) the faces still use, numbered in input order.
   std::vector<uint32_t> index(vertices, 0), vt(format == "obj" ? texcoords : 0),
-      vn(format == "obj" ? normals : 0);
+      vn(format == "obj" && !flat_normals ? normals : 0);
   uint64_t face_count = 0;
   faces([&](const FaceRecord& r) {
     for (int c = 0; c < 3; ++c) {
@@ -224,6 +225,7 @@ uint64_t write_output(const std::string& input, const std::string& output, uint6
   if (!error.empty()) throw std::runtime_error("cannot read " + input + " again: " + error);
 
   uint32_t group = 0;
+  uint64_t face_normals = 0;
   char line[256];
   faces([&](const FaceRecord& r) {
     if (layout.format == Layout::Format::Obj) {
@@ -231,14 +233,33 @@ uint64_t write_output(const std::string& input, const std::string& output, uint6
         group = r.group;
         out.text("usemtl " + materials[group - 1] + "\n");
       }
+      if (flat_normals) { // the face's own unit normal, just before it
+        const float* p = r.p[0];
+        const float u[3] = {r.p[1][0] - p[0], r.p[1][1] - p[1], r.p[1][2] - p[2]},
+                    w[3] = {r.p[2][0] - p[0], r.p[2][1] - p[1], r.p[2][2] - p[2]};
+        float n[3] = {u[1] * w[2] - u[2] * w[1], u[2] * w[0] - u[0] * w[2],
+                      u[0] * w[1] - u[1] * w[0]};
+        const float length = std::sqrt(n[0] * n[0] + n[1] * n[1] + n[2] * n[2]);
+        if (length > 0)
+          for (float& x : n)
+            x /= length;
+        const int len = std::snprintf(line, sizeof line, "vn %.9g %.9g %.9g\n", double(n[0]),
+                                      double(n[1]), double(n[2]));
+        out.text(line, size_t(len));
+        ++face_normals;
+      }
       std::string f = "f";
       for (int c = 0; c < 3; ++c) {
         int len = std::snprintf(line, sizeof line, " %u", index[r.v[c]]);
-        if (r.a[c] && r.a[c] <= vt.size())
+        const bool has_vt = r.a[c] && r.a[c] <= vt.size();
+        if (has_vt)
           len += std::snprintf(line + len, sizeof line - size_t(len), "/%u", vt[r.a[c] - 1]);
-        if (r.b[c] && r.b[c] <= vn.size())
-          len += std::snprintf(line + len, sizeof line - size_t(len), "%s/%u",
-                               r.a[c] && r.a[c] <= vt.size() ? "" : "/", vn[r.b[c] - 1]);
+        if (flat_normals)
+          len += std::snprintf(line + len, sizeof line - size_t(len), "%s/%llu", has_vt ? "" : "/",
+                               (unsigned long long)face_normals);
+        else if (r.b[c] && r.b[c] <= vn.size())
+          len += std::snprintf(line + len, sizeof line - size_t(len), "%s/%u", has_vt ? "" : "/",
+                               vn[r.b[c] - 1]);
         f.append(line, size_t(len));
       }
       out.text(f + "\n");

@@ -17,8 +17,10 @@ namespace vrs::tiled {
 std::string format_of(const std::string& path);
 
 // Writes `output` atomically; returns its face count. `materials`: an OBJ's names by group - 1.
+// `flat_normals` (OBJ): the input's vn lines are one a face (flat shading); each output face is
+// given its own unit normal instead, as the in-core run gives it.
 uint64_t write_output(const std::string& input, const std::string& output, uint64_t vertices,
-                      uint64_t texcoords, uint64_t normals,
+                      uint64_t texcoords, uint64_t normals, bool flat_normals,
                       const std::vector<std::string>& materials, const FaceSource& faces);
 
 } // namespace vrs::tiled

@@ -137,6 +137,10 @@ Level begin(const std::string& input, const Settings& settings) {
   Box box{{HUGE_VALF, HUGE_VALF, HUGE_VALF}, {-HUGE_VALF, -HUGE_VALF, -HUGE_VALF}};
   uint64_t vertices = 0, faces = 0, texcoords = 0, normals = 0;
   bool vertex_data = false; // a vertex holds more than its position (split vertices: seam)
+  // OBJ normals, one per face (every face's corners name one vn line): flat shading, which
+  // holds nothing the geometry does not (as in core: no seams, the output faces their own).
+  const bool obj = format_of(input) == "obj";
+  bool normal_keys = false, flat = true, other_keys = false;
   int64_t max_index = -1, min_index = 0;
   std::vector<std::string> materials;
   std::unique_ptr<RecordWriter> kout;
@@ -167,6 +171,9 @@ Level begin(const std::string& input, const Settings& settings) {
         t[c] = uint32_t(std::min<int64_t>(std::max<int64_t>(v[c], 0), 0xffffffffLL));
       }
       fout.write(t, 12);
+      normal_keys |= (k.b[0] | k.b[1] | k.b[2]) != 0;
+      flat &= k.b[0] == k.b[1] && k.b[1] == k.b[2];
+      other_keys |= (k.group | k.a[0] | k.a[1] | k.a[2]) != 0;
       if (!kout && (k.group | k.a[0] | k.a[1] | k.a[2] | k.b[0] | k.b[1] | k.b[2])) {
         kout = std::make_unique<RecordWriter>(dir + "/keys.bin");
         const CornerKeys none{};
@@ -191,7 +198,7 @@ Level begin(const std::string& input, const Settings& settings) {
       vertex_data |= l.format == Layout::Format::Off && l.off_keyword != "OFF";
     };
     // OBJ: "v x y z [w | r g b]", colours are vertex data (PLY, OFF: their header says).
-    if (format_of(input) == "obj")
+    if (obj)
       sink.raw_vertex = [&](const char* data, size_t size) {
         if (vertex_data || size < 2 || data[0] != 'v') return;
         int tokens = 0;
@@ -238,11 +245,17 @@ Level begin(const std::string& input, const Settings& settings) {
 
   State s;
   s["input"] = input;
-  s["keys"] = kout ? "1" : "0";
+  const bool flat_normals = obj && normal_keys && flat;
+  s["flat_normals"] = flat_normals ? "1" : "0";
+  const bool corner_data = other_keys || (normal_keys && !flat_normals);
+  // Keys only for what they hold: flat normals alone need none (the tiles then stay as large
+  // as those of a mesh without any).
+  const bool keyed = kout && corner_data;
+  s["keys"] = keyed ? "1" : "0";
   const std::string& split = settings.split_vertices;
   if (!split.empty() && split != "seam" && split != "weld" && split != "keep")
     throw std::runtime_error("split_vertices must be seam, weld or keep, got " + split);
-  s["split"] = !split.empty() ? split : vertex_data || kout ? "seam" : "weld";
+  s["split"] = !split.empty() ? split : vertex_data || corner_data ? "seam" : "weld";
   s["texcoords"] = num(double(texcoords));
   s["normals"] = num(double(normals));
   s["vertices"] = num(double(vertices));
@@ -252,7 +265,7 @@ Level begin(const std::string& input, const Settings& settings) {
   s["ratio"] = num(settings.ratio);
   // Tiles with per-corner data also hold their keys, seams and corner sources while they run:
   // measured 315 bytes a face at the peak of a lone tile against 200 without (5.7 M faces, 10 %).
-  const uint64_t per_tile = kout ? settings.faces_per_tile * 200 / 320 : settings.faces_per_tile;
+  const uint64_t per_tile = keyed ? settings.faces_per_tile * 200 / 320 : settings.faces_per_tile;
   s["faces_per_tile"] = num(double(per_tile));
   s["level"] = "1";
   s["stalls"] = "0";
@@ -268,8 +281,8 @@ Level begin(const std::string& input, const Settings& settings) {
     if (got != vertices) throw std::runtime_error("cannot read back " + dir + "/vertices.bin");
     // A mesh that fits the whole budget is one tile at once (what the last level would be).
     const uint64_t budget = faces <= lone_faces(per_tile) ? faces : per_tile;
-    s["tiles"] = num(double(partition(dir, 1, vertices, box, budget, bool(kout), false,
-                                      input_faces(dir, positions, bool(kout)))));
+    s["tiles"] = num(double(partition(dir, 1, vertices, box, budget, keyed, false,
+                                      input_faces(dir, positions, keyed))));
   }
   // In the tiles now; the disk is the next level's.
   std::remove((dir + "/faces.bin").c_str());
@@ -300,6 +313,8 @@ void run_tile(const std::string& dir, int level, uint64_t tile, int lone_threads
   // Locked: every corner of a face at the border (one with a shared corner). A vertex that is
   // not shared has all its faces in this tile, so the tile sees every face that locks it.
   std::vector<uint8_t> locked(ids.size(), 0);
+  // Flat normals are no seam, and the output gives each face its own (write_output).
+  const bool flat = s.count("flat_normals") && s.at("flat_normals") == "1";
   TileKeys keys;
   if (keyed)
     keys.a.resize(3 * in.size()), keys.b.resize(3 * in.size()), keys.group.resize(in.size());
@@ -309,7 +324,7 @@ void run_tile(const std::string& dir, int level, uint64_t tile, int lone_threads
       mesh.triangles[3 * f + c] = l;
       std::memcpy(&mesh.positions[3 * size_t(l)], in[f].p[c], 12);
       if (in[f].shared) locked[l] = 1;
-      if (keyed) keys.a[3 * f + c] = in[f].a[c], keys.b[3 * f + c] = in[f].b[c];
+      if (keyed) keys.a[3 * f + c] = in[f].a[c], keys.b[3 * f + c] = flat ? 0 : in[f].b[c];
     }
     if (keyed) keys.group[f] = in[f].group;
   }
@@ -438,6 +453,7 @@ uint64_t finish(const std::string& dir, const std::string& output) {
   const uint64_t tiles = uint64_t(state_number(s, "tiles"));
   return write_output(s.at("input"), output, uint64_t(state_number(s, "vertices")),
                       uint64_t(state_number(s, "texcoords")), uint64_t(state_number(s, "normals")),
+                      s.count("flat_normals") && s.at("flat_normals") == "1",
                       read_lines(dir + "/materials"),
                       level_outputs(dir, level, tiles, has_keys(s)));
 }
