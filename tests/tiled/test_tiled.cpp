@@ -18,9 +18,11 @@
 
 #include <unistd.h>
 
+#include "corner_values.h"
 #include "mesh_checks.h"
 #include "mesh_stream.h"
 #include "test_meshes.h"
+#include "tile_seams.h"
 #include "vrs/tiled.h"
 
 namespace {
@@ -645,6 +647,92 @@ TEST(Tiled, FlatShadedObjIsSimplifiedAsWithoutNormalsAndFacesGetTheirOwn) {
   EXPECT_LE(faces, size_t(0.1 * double(m.face_count()) * 1.005 + 2));
   EXPECT_GE(faces, size_t(0.1 * double(m.face_count()) * 0.9));
   EXPECT_EQ(wrong, 0u) << "output faces whose normal is not their own";
+  vrs::tiled::discard(dir);
+}
+
+// Corners agree by the values their vt and vn lines hold, as in core, not by which line they
+// name: an unindexed file (every corner its own lines) has no seam where the values agree; a
+// normal turning more than 60 degrees, or another texture coordinate, still makes one.
+TEST(Tiled, CornersAgreeByValueNotByLine) {
+  const std::string dir = temp_dir();
+  // Two triangles on the edge (1, 2), each corner naming its own vt and vn line.
+  vrs::Mesh m;
+  m.positions = {0, 0, 0, 1, 0, 0, 0, 1, 0, 1, 1, 0};
+  m.triangles = {0, 1, 2, 2, 1, 3};
+  auto seams_with = [&](std::vector<float> vt, std::vector<float> vn) {
+    for (const auto& [name, values] : {std::make_pair("vt.bin", vt), std::make_pair("vn.bin", vn)})
+      std::ofstream(dir + "/" + name, std::ios::binary)
+          .write(reinterpret_cast<const char*>(values.data()), std::streamsize(4 * values.size()));
+    const vrs::tiled::CornerValues t(dir + "/vt.bin", 2), n(dir + "/vn.bin", 3);
+    vrs::tiled::TileKeys keys;
+    keys.a = keys.b = {1, 2, 3, 4, 5, 6}; // corner k of face f names line 3 f + k + 1
+    keys.group = {0, 0};
+    keys.texcoords = &t, keys.normals = &n;
+    return vrs::tiled::tile_seams(m, keys).size() / 2;
+  };
+  // Lines 2, 3 (face 0's corners at vertices 1, 2) and 5, 4 (face 1's at 1, 2) are the edge's.
+  const std::vector<float> uv = {0, 0, 1, 0, 0, 1, 0, 1, 1, 0, 1, 1};
+  const std::vector<float> up = {0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1, 0, 0, 1};
+  EXPECT_EQ(seams_with(uv, up), 0u) << "the same values on other lines";
+  std::vector<float> tilted = up;
+  tilted[3 * 4 + 0] = 0.5f; // line 5: 27 degrees from line 2's, smooth shading
+  EXPECT_EQ(seams_with(uv, tilted), 0u) << "normals within the crease angle";
+  tilted[3 * 4 + 0] = 1, tilted[3 * 4 + 2] = 0; // 90 degrees: a hard edge
+  EXPECT_EQ(seams_with(uv, tilted), 1u) << "a hard edge";
+  std::vector<float> moved = uv;
+  moved[2 * 3 + 1] = 0.5f; // line 4 (vertex 2 in face 1) another texture coordinate
+  EXPECT_EQ(seams_with(moved, up), 1u) << "a texture seam";
+
+  // A whole run: a sphere's vertex normals written on a line per corner simplifies as the
+  // same sphere without normals (12 946 -> 12 946 faces before, every edge a seam).
+  const vrs::Mesh s = vrs_test::icosphere(5);
+  std::ostringstream plain, unindexed;
+  for (size_t v = 0; v < s.vertex_count(); ++v) {
+    char line[96];
+    std::snprintf(line, sizeof line, "v %.9g %.9g %.9g\n", double(s.positions[3 * v]),
+                  double(s.positions[3 * v + 1]), double(s.positions[3 * v + 2]));
+    plain << line;
+    unindexed << line;
+  }
+  for (size_t t = 0; t < s.face_count(); ++t) {
+    const uint32_t* f = &s.triangles[3 * t];
+    for (int c = 0; c < 3; ++c)
+      unindexed << "vn " << s.positions[3 * f[c]] << " " << s.positions[3 * f[c] + 1] << " "
+                << s.positions[3 * f[c] + 2] << "\n";
+    plain << "f " << f[0] + 1 << " " << f[1] + 1 << " " << f[2] + 1 << "\n";
+    unindexed << "f " << f[0] + 1 << "//" << 3 * t + 1 << " " << f[1] + 1 << "//" << 3 * t + 2
+              << " " << f[2] + 1 << "//" << 3 * t + 3 << "\n";
+  }
+  std::ofstream(dir + "/plain.obj") << plain.str();
+  std::ofstream(dir + "/unindexed.obj") << unindexed.str();
+  ASSERT_EQ(run(dir + "/plain.obj", dir + "/plain_out.obj", 0.1, 1000000, 2), "");
+  ASSERT_EQ(run(dir + "/unindexed.obj", dir + "/unindexed_out.obj", 0.1, 1000000, 2), "");
+  size_t faces = 0, plain_faces = 0;
+  for (const std::string& l : lines_of(slurp(dir + "/plain_out.obj")))
+    plain_faces += l.rfind("f ", 0) == 0;
+  std::vector<std::string> v, vn;
+  size_t wrong = 0;
+  for (const std::string& l : lines_of(slurp(dir + "/unindexed_out.obj"))) {
+    if (l.rfind("v ", 0) == 0) v.push_back(l.substr(2));
+    if (l.rfind("vn ", 0) == 0) vn.push_back(l.substr(3));
+    if (l.rfind("f ", 0) != 0) continue;
+    ++faces;
+    unsigned a[3], n[3];
+    ASSERT_EQ(
+        std::sscanf(l.c_str(), "f %u//%u %u//%u %u//%u", &a[0], &n[0], &a[1], &n[1], &a[2], &n[2]),
+        6)
+        << l;
+    for (int c = 0; c < 3; ++c) { // each corner's normal is its vertex's (the position here)
+      float p[3], q[3];
+      std::sscanf(v[a[c] - 1].c_str(), "%f %f %f", &p[0], &p[1], &p[2]);
+      std::sscanf(vn[n[c] - 1].c_str(), "%f %f %f", &q[0], &q[1], &q[2]);
+      wrong += std::fabs(p[0] - q[0]) + std::fabs(p[1] - q[1]) + std::fabs(p[2] - q[2]) > 1e-5f;
+    }
+  }
+  EXPECT_LE(faces, size_t(0.1 * double(s.face_count()) * 1.005 + 2));
+  EXPECT_GE(faces, size_t(0.1 * double(s.face_count()) * 0.9));
+  EXPECT_LE(faces, plain_faces + 2);
+  EXPECT_EQ(wrong, 0u) << "output corners whose normal is not their vertex's";
   vrs::tiled::discard(dir);
 }
 

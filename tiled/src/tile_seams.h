@@ -11,10 +11,19 @@
 
 namespace vrs::tiled {
 
-// Each face's three corners' keys (a, b: 3 a face) and its group, beside `mesh`'s triangles.
+class CornerValues;
+
+// Each face's three corners' keys (a, b: 3 a face) and its group, beside `mesh`'s triangles;
+// and, for an OBJ, the values its vt and vn lines hold (corners then agree by value).
 struct TileKeys {
   std::vector<uint32_t> a, b, group;
+  const CornerValues* texcoords = nullptr;
+  const CornerValues* normals = nullptr;
 };
+
+// Smooth normals turning more than this apart make a hard edge (a seam), as in the CLI
+// (vrs_vcg::kNormalCreaseDeg).
+constexpr double kNormalCreaseCos = 0.5; // cos 60 degrees
 
 // Vertex pairs (a0, b0, a1, b1, ...) of the edges whose two faces disagree at either end or
 // differ in group, for Options::constrained_edges.

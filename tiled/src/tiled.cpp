@@ -13,6 +13,7 @@
 #include <sys/stat.h>
 #include <unistd.h>
 
+#include "corner_values.h"
 #include "mesh_stream.h"
 #include "output_file.h"
 #include "partition.h"
@@ -207,12 +208,21 @@ Level begin(const std::string& input, const Settings& settings) {
                     (i == 0 || data[i - 1] == ' ' || data[i - 1] == '\t');
         vertex_data = tokens > 5;
       };
+    // OBJ vt and vn values, for the tiles to tell seams by value (corner_values.h).
+    RecordWriter vtout(dir + "/texcoords.bin"), vnout(dir + "/normals.bin");
     sink.other_line = [&](const std::string& line) {
       const size_t start = line.find_first_not_of(" \t");
       if (start == std::string::npos) return;
       const char* c = line.c_str() + start;
-      texcoords += c[0] == 'v' && c[1] == 't' && (c[2] == ' ' || c[2] == '\t');
-      normals += c[0] == 'v' && c[1] == 'n' && (c[2] == ' ' || c[2] == '\t');
+      const bool vt = c[0] == 'v' && c[1] == 't' && (c[2] == ' ' || c[2] == '\t');
+      const bool vn = c[0] == 'v' && c[1] == 'n' && (c[2] == ' ' || c[2] == '\t');
+      if (!vt && !vn) return;
+      float x[3] = {0, 0, 0}; // missing values read as 0, as vcg reads them
+      char* end = const_cast<char*>(c + 2);
+      for (int i = 0; i < (vt ? 2 : 3); ++i)
+        x[i] = std::strtof(end, &end);
+      if (vt) ++texcoords, vtout.write(x, 8);
+      if (vn) ++normals, vnout.write(x, 12);
     };
     std::string error;
     try {
@@ -231,8 +241,14 @@ Level begin(const std::string& input, const Settings& settings) {
       throw std::runtime_error("more than 4 294 967 293 vertices: not supported");
     vout.commit();
     fout.commit();
+    vtout.commit();
+    vnout.commit();
     if (kout) kout->commit();
   }
+  // Flat shading as the in-core run tells it: one normal value at every face's corners (a
+  // file may write it on three vn lines).
+  if (obj && normal_keys && !flat && kout)
+    flat = flat_by_value(dir + "/keys.bin", faces, CornerValues(dir + "/normals.bin", 3));
   if (!materials.empty()) {
     RecordWriter m(dir + "/materials");
     for (const std::string& name : materials)
@@ -313,9 +329,12 @@ void run_tile(const std::string& dir, int level, uint64_t tile, int lone_threads
   // Locked: every corner of a face at the border (one with a shared corner). A vertex that is
   // not shared has all its faces in this tile, so the tile sees every face that locks it.
   std::vector<uint8_t> locked(ids.size(), 0);
-  // Flat normals are no seam, and the output gives each face its own (write_output).
+  // Flat normals are no seam, and the output gives each face its own (write_output); other
+  // corner data is told apart by value (corner_values.h).
   const bool flat = s.count("flat_normals") && s.at("flat_normals") == "1";
+  const CornerValues vt(dir + "/texcoords.bin", 2), vn(dir + "/normals.bin", 3);
   TileKeys keys;
+  keys.texcoords = &vt, keys.normals = &vn;
   if (keyed)
     keys.a.resize(3 * in.size()), keys.b.resize(3 * in.size()), keys.group.resize(in.size());
   for (size_t f = 0; f < in.size(); ++f) {
