@@ -37,6 +37,12 @@ std::string explain_remaining(const Remaining& r, bool simplify_boundary, bool l
            " of them would fold the surface over (against the faces it replaces or the input "
            "nearest it)";
   add(r.untried, "without a usable plane (degenerate or non-finite neighbourhood)");
+  // A soup of faces (every edge written twice) is all seams in Seam mode: say what welds it.
+  if (r.constrained + r.split_seam > 0 && 2 * r.split_seam_edges > r.constrained_edges)
+    out += "; most seams are where split vertices meet (" + std::to_string(r.split_seam_edges) +
+           " of " + std::to_string(r.constrained_edges) +
+           " edges): if their copies hold nothing of their own, split_vertices weld welds them "
+           "freely";
   return "remaining vertices: " + (out.empty() ? std::string("none") : out);
 }
 
@@ -78,6 +84,8 @@ std::string Simplifier::explain_stop() const {
     else
       ++r.untried;
   }
+  if (opt_.split_vertices == SplitVertices::Seam) r.split_seam_edges = welding_.seams.size() / 2;
+  r.constrained_edges = rep_.constrained_edges;
   return explain_remaining(r, simplify_boundary_, last_resort_);
 }
 

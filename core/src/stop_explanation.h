@@ -19,6 +19,9 @@ struct Remaining {
   size_t nonmanifold = 0;  // non-manifold or inconsistently oriented
   size_t high_valence = 0; // more neighbours than the cap
   size_t untried = 0;      // no usable plane
+  // Of the run's constrained edges, how many are seams of split vertices kept apart
+  // (SplitVertices::Seam): where they are most, the words say how to weld them.
+  size_t split_seam_edges = 0, constrained_edges = 0;
   std::array<size_t, RejectCount> refused{}; // by the veto that refused their last plan
 };
 

@@ -131,6 +131,11 @@ TEST(SplitVertices, ASoupOfFacesIsWeldedIntoItsSurface) {
   const Report rs = simplify(seam, o);
   EXPECT_EQ(vrs_test::check_run(in, seam, o, rs), "");
   EXPECT_EQ(seam.face_count(), in.face_count());
+  // ... and the report says what welds it.
+  EXPECT_NE(rs.stop_detail.find("most seams are where split vertices meet"), std::string::npos)
+      << rs.stop_detail;
+  EXPECT_NE(rs.stop_detail.find("split_vertices weld welds them freely"), std::string::npos)
+      << rs.stop_detail;
 }
 
 TEST(SplitVertices, ALockedCopyKeepsTheVertexAndEveryCopy) {

@@ -42,3 +42,19 @@ TEST(StopExplanation, TheLastResortSaysFoldOversStoppedItOnlyWhenItRan) {
       << said;
   EXPECT_EQ(explain_remaining(r, false, false).find("last resort"), std::string::npos);
 }
+
+TEST(StopExplanation, SaysHowToWeldOnlyWhereSplitVerticesMakeMostSeams) {
+  Remaining r;
+  r.constrained = 10;
+  r.split_seam_edges = 60;
+  r.constrained_edges = 100;
+  const std::string most = explain_remaining(r, false, false);
+  EXPECT_NE(most.find("most seams are where split vertices meet (60 of 100 edges)"),
+            std::string::npos)
+      << most;
+  r.split_seam_edges = 50; // half: texture seams as many as the copies'
+  EXPECT_EQ(explain_remaining(r, false, false).find("split_vertices"), std::string::npos);
+  r.split_seam_edges = 60;
+  r.constrained = 0; // nothing kept by a seam: nothing to say about them
+  EXPECT_EQ(explain_remaining(r, false, false).find("split_vertices"), std::string::npos);
+}
