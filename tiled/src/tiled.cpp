@@ -138,8 +138,9 @@ Level begin(const std::string& input, const Settings& settings) {
   Box box{{HUGE_VALF, HUGE_VALF, HUGE_VALF}, {-HUGE_VALF, -HUGE_VALF, -HUGE_VALF}};
   uint64_t vertices = 0, faces = 0, texcoords = 0, normals = 0;
   bool vertex_data = false; // a vertex holds more than its position (split vertices: seam)
-  // OBJ normals, one per face (every face's corners name one vn line): flat shading, which
-  // holds nothing the geometry does not (as in core: no seams, the output faces their own).
+  // OBJ normals, one per face (every face's corners name one vn line here, or lines of one
+  // value: flat_by_value below): flat shading, which holds nothing the geometry does not (as
+  // in core: no seams, the output faces their own).
   const bool obj = format_of(input) == "obj";
   bool normal_keys = false, flat = true, other_keys = false;
   int64_t max_index = -1, min_index = 0;
