@@ -29,13 +29,17 @@ namespace {
 // Three coordinates as text, by strtof's grammar: "nan" and "inf" read as the PLY reader reads
 // them (the core keeps such vertices and says so), not as a malformed file; istream's >> for
 // float refuses them.
+// One coordinate, the whole token [begin, end) or nothing.
+bool coordinate(const char* begin, const char* end, float& c) {
+  char* stop = nullptr;
+  c = std::strtof(begin, &stop);
+  return begin != end && stop == end;
+}
+
 bool read_xyz(std::istream& s, float& x, float& y, float& z) {
   for (float* c : {&x, &y, &z}) {
     std::string token;
-    if (!(s >> token)) return false;
-    char* end = nullptr;
-    *c = std::strtof(token.c_str(), &end);
-    if (end == token.c_str() || *end != '\0') return false;
+    if (!(s >> token) || !coordinate(token.c_str(), token.c_str() + token.size(), *c)) return false;
   }
   return true;
 }
@@ -53,10 +57,7 @@ class LineNumbers {
       const char* token = p_;
       while (*p_ && !std::isspace(static_cast<unsigned char>(*p_)))
         ++p_;
-      if (p_ == token) return false;
-      char* end = nullptr;
-      *c = std::strtof(token, &end);
-      if (end != p_) return false;
+      if (!coordinate(token, p_, *c)) return false;
     }
     return true;
   }

@@ -15,19 +15,15 @@ constexpr size_t kBlock = 65536;
 // starts[b]: where block b of [0, n) writes, from kept(i) over the indices; starts[blocks]: all.
 template <class Kept>
 std::vector<uint32_t> block_starts(Workers* workers, size_t n, const Kept& kept) {
-  const size_t blocks = (n + kBlock - 1) / kBlock;
-  std::vector<uint32_t> starts(blocks + 1, 0);
-  for_each_on(
-      workers, blocks,
-      [&](size_t b) {
-        uint32_t count = 0;
-        for (size_t i = b * kBlock; i < std::min(n, (b + 1) * kBlock); ++i)
-          count += kept(i);
-        starts[b + 1] = count;
-      },
-      1);
-  for (size_t b = 0; b < blocks; ++b)
-    starts[b + 1] += starts[b];
+  std::vector<uint32_t> starts((n + kBlock - 1) / kBlock + 1, 0);
+  for_each_block(workers, n, kBlock, [&](size_t begin, size_t end) {
+    uint32_t count = 0;
+    for (size_t i = begin; i < end; ++i)
+      count += kept(i);
+    starts[begin / kBlock + 1] = count;
+  });
+  for (size_t b = 1; b < starts.size(); ++b)
+    starts[b] += starts[b - 1];
   return starts;
 }
 
@@ -45,31 +41,25 @@ void write_output(Mesh& mesh, const SpatialOrder& order, const std::vector<uint8
   const auto vstarts =
       block_starts(workers, n, [&](size_t i) { return !removed[order.vertex_new[i]]; });
   std::vector<float> kept(3 * size_t(vstarts.back()));
-  for_each_on(
-      workers, vstarts.size() - 1,
-      [&](size_t b) {
-        uint32_t next = vstarts[b];
-        for (size_t i = b * kBlock; i < std::min(n, (b + 1) * kBlock); ++i) {
-          const uint32_t v = order.vertex_new[i];
-          if (removed[v]) continue;
-          std::copy_n(&pos[3 * size_t(v)], 3, &kept[3 * size_t(next)]);
-          rep.remap[i] = out_index[v] = next++;
-        }
-      },
-      1);
+  for_each_block(workers, n, kBlock, [&](size_t begin, size_t end) {
+    uint32_t next = vstarts[begin / kBlock];
+    for (size_t i = begin; i < end; ++i) {
+      const uint32_t v = order.vertex_new[i];
+      if (removed[v]) continue;
+      std::copy_n(&pos[3 * size_t(v)], 3, &kept[3 * size_t(next)]);
+      rep.remap[i] = out_index[v] = next++;
+    }
+  });
   pos.swap(kept);
   std::vector<float>().swap(kept);
 
   auto& tris = mesh.triangles;
   const size_t slots = tris.size() / 3;
   std::vector<uint32_t> slot_of(slots); // input slot -> internal slot
-  for_each_on(
-      workers, (slots + kBlock - 1) / kBlock,
-      [&](size_t b) {
-        for (size_t f = b * kBlock; f < std::min(slots, (b + 1) * kBlock); ++f)
-          slot_of[order.face_old[f]] = uint32_t(f);
-      },
-      1);
+  for_each_block(workers, slots, kBlock, [&](size_t begin, size_t end) {
+    for (size_t f = begin; f < end; ++f)
+      slot_of[order.face_old[f]] = uint32_t(f);
+  });
   const auto fstarts =
       block_starts(workers, slots, [&](size_t j) { return tris[3 * size_t(slot_of[j])] != kNone; });
   const size_t faces = fstarts.back();
@@ -77,29 +67,26 @@ void write_output(Mesh& mesh, const SpatialOrder& order, const std::vector<uint8
   rep.face_source.assign(faces, 0);
   rep.corner_source.assign(corner_source.empty() ? 0 : 3 * faces, 0);
   std::vector<float> bound(fstarts.size() - 1, 0.0f); // each block's largest
-  for_each_on(
-      workers, fstarts.size() - 1,
-      [&](size_t b) {
-        size_t at = fstarts[b];
-        for (size_t j = b * kBlock; j < std::min(slots, (b + 1) * kBlock); ++j) {
-          const size_t f = slot_of[j];
-          if (tris[3 * f] == kNone) continue;
-          rep.face_source[at] = face_source[f];
-          if (!face_bound.empty()) bound[b] = std::max(bound[b], face_bound[f]);
-          if (!corner_source.empty())
-            std::copy_n(&corner_source[3 * f], 3, &rep.corner_source[3 * at]);
-          for (int c = 0; c < 3; ++c) {
-            uint32_t v = tris[3 * f + c];
-            if (!records.corners.empty()) { // welded: the copy the input corner had
-              const uint32_t own = records.corners[corner_source[3 * f + c]];
-              if (order.vertex_new[records.standing[own]] == v) v = order.vertex_new[own];
-            }
-            out[3 * at + c] = out_index[v];
-          }
-          ++at;
+  for_each_block(workers, slots, kBlock, [&](size_t begin, size_t end) {
+    const size_t b = begin / kBlock;
+    size_t at = fstarts[b];
+    for (size_t j = begin; j < end; ++j) {
+      const size_t f = slot_of[j];
+      if (tris[3 * f] == kNone) continue;
+      rep.face_source[at] = face_source[f];
+      if (!face_bound.empty()) bound[b] = std::max(bound[b], face_bound[f]);
+      if (!corner_source.empty()) std::copy_n(&corner_source[3 * f], 3, &rep.corner_source[3 * at]);
+      for (int c = 0; c < 3; ++c) {
+        uint32_t v = tris[3 * f + c];
+        if (!records.corners.empty()) { // welded: the copy the input corner had
+          const uint32_t own = records.corners[corner_source[3 * f + c]];
+          if (order.vertex_new[records.standing[own]] == v) v = order.vertex_new[own];
         }
-      },
-      1);
+        out[3 * at + c] = out_index[v];
+      }
+      ++at;
+    }
+  });
   for (float x : bound)
     rep.error_bound = std::max(rep.error_bound, double(x));
   tris.swap(out);

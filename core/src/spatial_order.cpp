@@ -20,12 +20,8 @@ uint64_t spread3(uint64_t x) {
   return x;
 }
 
-// Calls fn(begin, end) over [0, n) in blocks, on the workers when given.
+// Blocks of the loops over vertices and faces, on the workers when given.
 constexpr size_t kBlock = 65536;
-void blocks(Workers* w, size_t n, const std::function<void(size_t, size_t)>& fn) {
-  for_each_on(w, (n + kBlock - 1) / kBlock,
-              [&](size_t b) { fn(b * kBlock, std::min(n, (b + 1) * kBlock)); });
-}
 
 } // namespace
 
@@ -47,7 +43,7 @@ SpatialOrder spatial_order(std::vector<float>& positions, std::vector<uint32_t>&
 
   // (code, input index) pairs: sorting them orders ties by index, so the result is unique.
   std::vector<std::pair<uint64_t, uint32_t>> keys(n);
-  blocks(workers, n, [&](size_t begin, size_t end) {
+  for_each_block(workers, n, kBlock, [&](size_t begin, size_t end) {
     for (size_t v = begin; v < end; ++v) {
       const float* p = &positions[3 * v];
       uint64_t code = std::numeric_limits<uint64_t>::max();
@@ -74,7 +70,7 @@ SpatialOrder spatial_order(std::vector<float>& positions, std::vector<uint32_t>&
   SpatialOrder order;
   order.vertex_old.resize(n);
   order.vertex_new.resize(n);
-  blocks(workers, n, [&](size_t begin, size_t end) {
+  for_each_block(workers, n, kBlock, [&](size_t begin, size_t end) {
     for (size_t i = begin; i < end; ++i) {
       order.vertex_old[i] = keys[i].second;
       order.vertex_new[keys[i].second] = uint32_t(i);
@@ -83,7 +79,7 @@ SpatialOrder spatial_order(std::vector<float>& positions, std::vector<uint32_t>&
   std::vector<std::pair<uint64_t, uint32_t>>().swap(keys);
   {
     std::vector<float> moved(positions.size());
-    blocks(workers, n, [&](size_t begin, size_t end) {
+    for_each_block(workers, n, kBlock, [&](size_t begin, size_t end) {
       for (size_t i = begin; i < end; ++i)
         std::copy_n(&positions[3 * size_t(order.vertex_old[i])], 3, &moved[3 * i]);
     });
@@ -91,7 +87,7 @@ SpatialOrder spatial_order(std::vector<float>& positions, std::vector<uint32_t>&
   }
 
   // Faces: counting sort by their lowest new corner (stable, linear).
-  blocks(workers, triangles.size(), [&](size_t begin, size_t end) {
+  for_each_block(workers, triangles.size(), kBlock, [&](size_t begin, size_t end) {
     for (size_t i = begin; i < end; ++i)
       triangles[i] = order.vertex_new[triangles[i]];
   });
@@ -106,7 +102,7 @@ SpatialOrder spatial_order(std::vector<float>& positions, std::vector<uint32_t>&
         {triangles[3 * f], triangles[3 * f + 1], triangles[3 * f + 2]})]++] = uint32_t(f);
   std::vector<uint32_t>().swap(start);
   std::vector<uint32_t> moved(triangles.size());
-  blocks(workers, faces, [&](size_t begin, size_t end) {
+  for_each_block(workers, faces, kBlock, [&](size_t begin, size_t end) {
     for (size_t f = begin; f < end; ++f)
       std::copy_n(&triangles[3 * size_t(order.face_old[f])], 3, &moved[3 * f]);
   });

@@ -35,6 +35,12 @@ void for_each_on(Workers* workers, size_t n, const std::function<void(size_t)>& 
     fn(i);
 }
 
+void for_each_block(Workers* workers, size_t n, size_t block,
+                    const std::function<void(size_t, size_t)>& fn) {
+  for_each_on(workers, (n + block - 1) / block,
+              [&](size_t b) { fn(b * block, std::min(n, (b + 1) * block)); });
+}
+
 int hardware_threads() {
   return std::max(1, int(std::thread::hardware_concurrency()));
 }

@@ -55,6 +55,11 @@ class Workers {
 void for_each_on(Workers* workers, size_t n, const std::function<void(size_t)>& fn,
                  size_t grain = 1);
 
+// fn(begin, end) over [0, n) in blocks of `block` indices (the last one shorter), handed out
+// with for_each_on: a block is one item.
+void for_each_block(Workers* workers, size_t n, size_t block,
+                    const std::function<void(size_t, size_t)>& fn);
+
 // The number of threads Options::threads = 0 stands for: the machine's hardware threads.
 int hardware_threads();
 

@@ -44,14 +44,14 @@ bool same_bits(const float* x, const float* y, int floats) {
 
 } // namespace
 
-bool same_texcoord(const CornerValues& vt, uint32_t a, uint32_t b) {
-  return a == b || (!vt.empty() && same_bits(vt.at(a), vt.at(b), 2));
+bool same_texcoord(const CornerValues* vt, uint32_t a, uint32_t b) {
+  return a == b || (vt && !vt->empty() && same_bits(vt->at(a), vt->at(b), 2));
 }
 
-bool same_normal(const CornerValues& vn, uint32_t a, uint32_t b, double crease_cos) {
+bool same_normal(const CornerValues* vn, uint32_t a, uint32_t b, double crease_cos) {
   if (a == b) return true;
-  if (vn.empty()) return false;
-  const float *x = vn.at(a), *y = vn.at(b);
+  if (!vn || vn->empty()) return false;
+  const float *x = vn->at(a), *y = vn->at(b);
   if (same_bits(x, y, 3)) return true;
   if (!x || !y) return false;
   double dot = 0, xx = 0, yy = 0;

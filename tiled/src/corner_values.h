@@ -33,9 +33,9 @@ class CornerValues {
 // The in-core run's tests, on keys: two texture coordinates are one when their values have the
 // same bits; two normals when theirs do, or when both are nonzero and turn no more than the
 // crease angle apart (cos `crease_cos`; the CLI's 60 degrees) — smooth shading. Without
-// values (an empty map), equal keys.
-bool same_texcoord(const CornerValues& vt, uint32_t a, uint32_t b);
-bool same_normal(const CornerValues& vn, uint32_t a, uint32_t b, double crease_cos);
+// values (null or an empty map: a PLY's keys are the values' bits), equal keys.
+bool same_texcoord(const CornerValues* vt, uint32_t a, uint32_t b);
+bool same_normal(const CornerValues* vn, uint32_t a, uint32_t b, double crease_cos);
 
 // Whether every face of keys.bin (`faces` records) names one normal value at its three corners
 // (flat shading, as the in-core run tells it: by the values' bits, a missing normal as zero).

@@ -25,12 +25,9 @@ std::vector<uint32_t> tile_seams(const vrs::Mesh& mesh, const TileKeys& keys) {
   std::sort(sides.begin(), sides.end(), [](const Side& x, const Side& y) {
     return std::tie(x.lo, x.hi, x.face) < std::tie(y.lo, y.hi, y.face);
   });
-  const CornerValues none("", 1);
-  const CornerValues& vt = keys.texcoords ? *keys.texcoords : none;
-  const CornerValues& vn = keys.normals ? *keys.normals : none;
   const auto differ = [&](uint32_t f, uint8_t c, uint32_t g, uint8_t d) {
-    return !same_texcoord(vt, keys.a[3 * f + c], keys.a[3 * g + d]) ||
-           !same_normal(vn, keys.b[3 * f + c], keys.b[3 * g + d], kNormalCreaseCos);
+    return !same_texcoord(keys.texcoords, keys.a[3 * f + c], keys.a[3 * g + d]) ||
+           !same_normal(keys.normals, keys.b[3 * f + c], keys.b[3 * g + d], kNormalCreaseCos);
   };
   std::vector<uint32_t> seams;
   for (size_t i = 0; i < sides.size();) {
