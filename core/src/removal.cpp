@@ -176,6 +176,9 @@ Reject Planner::plan_seam(uint32_t v, const Ring& ring, int i, int j, Vec3 n, Pa
       sub.v[r] = ring.v[(first + r) % k];
     for (int r = 0; r + 1 < m; ++r)
       sub.f[r] = ring.f[(first + r) % k];
+    // A side is priced by its own error; the bound is the whole patch's, made below (the
+    // price's bound term read these, unset: the run differed from one process to the next).
+    side.bound.fill(0.0f);
     double side_cost = 0;
     Reject why = plan(v, sub, n, side, side_cost, check_topology,
                       on_edge ? OpenRing::SeamSideOnEdge : OpenRing::SeamSide, price);
@@ -190,7 +193,13 @@ Reject Planner::plan_seam(uint32_t v, const Ring& ring, int i, int j, Vec3 n, Pa
   out.count = count;
   project(v, ring, n, *eval_, out);
   if (face_bound_ && !ring.closed()) return RejectBound;
-  if (face_bound_) return veto_bound(ring, out, eval_->position(v), face_bound_, *limits_);
+  if (face_bound_) {
+    const Reject why = veto_bound(ring, out, eval_->position(v), face_bound_, *limits_);
+    if (why == RejectCount && price) // as Simplifier::price weighs a patch bounded whole
+      for (int t = 0; t < out.count; ++t)
+        cost = std::max(cost, double(out.bound[t]));
+    return why;
+  }
   return RejectCount;
 }
 
