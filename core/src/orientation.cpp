@@ -212,4 +212,32 @@ size_t orient_coherently(std::vector<uint32_t>& tris, const Topology& topo, cons
   return total;
 }
 
+TurnedByWelding turned_by_welding(const std::vector<uint32_t>& tris, const Topology& topo,
+                                  const std::vector<uint8_t>& flipped, std::vector<uint32_t> apart,
+                                  const uint32_t* rank, Workers* workers) {
+  TurnedByWelding out;
+  if (flipped.empty()) return out;
+  Topology apart_topo;
+  apart_topo.build(apart, topo.vertex_count());
+  std::vector<uint8_t> flipped_apart;
+  orient_coherently(apart, apart_topo, rank, flipped_apart, workers);
+  const size_t faces = tris.size() / 3;
+  out.faces.assign(faces, 0);
+  bool any = false;
+  for (size_t f = 0; f < faces; ++f)
+    any |= out.faces[f] = flipped[f] != (!flipped_apart.empty() && flipped_apart[f]);
+  if (!any) return TurnedByWelding{};
+  const uint32_t* t = tris.data();
+  for (size_t f = 0; f < faces; ++f) {
+    if (!out.faces[f]) continue;
+    for (int c = 0; c < 3; ++c) {
+      const uint32_t a = t[3 * f + c], b = t[3 * f + (c + 1) % 3];
+      bool same = false;
+      const uint32_t g = across(uint32_t(f), a, b, t, topo, same);
+      if (g != kNone && !out.faces[g]) out.edges.insert(out.edges.end(), {a, b});
+    }
+  }
+  return out;
+}
+
 } // namespace vrs

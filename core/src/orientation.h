@@ -22,4 +22,18 @@ namespace vrs {
 size_t orient_coherently(std::vector<uint32_t>& tris, const Topology& topo, const uint32_t* rank,
                          std::vector<uint8_t>& flipped, Workers* workers = nullptr);
 
+// Pieces written in different orientations and welded along their seams (split_vertices.h)
+// were turned by orient_coherently (`flipped`, on the welded `tris` and `topo`) where the
+// pieces apart would not have been: `apart` holds the same faces unwelded, as given. The faces
+// so turned, to be given back on output (a shuffled piece's faces stay turned, as without the
+// weld), and the edges between them and the others (pairs): kept, no face then spans two
+// orientations.
+struct TurnedByWelding {
+  std::vector<uint8_t> faces; // per face slot; empty: none
+  std::vector<uint32_t> edges;
+};
+TurnedByWelding turned_by_welding(const std::vector<uint32_t>& tris, const Topology& topo,
+                                  const std::vector<uint8_t>& flipped, std::vector<uint32_t> apart,
+                                  const uint32_t* rank, Workers* workers);
+
 } // namespace vrs

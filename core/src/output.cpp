@@ -84,6 +84,10 @@ void write_output(Mesh& mesh, const SpatialOrder& order, const std::vector<uint8
         }
         out[3 * at + c] = out_index[v];
       }
+      if (!records.turned.empty() && records.turned[corner_source[3 * f] / 3]) {
+        std::swap(out[3 * at + 1], out[3 * at + 2]); // welded: corner sources are kept
+        std::swap(rep.corner_source[3 * at + 1], rep.corner_source[3 * at + 2]);
+      }
       ++at;
     }
   });
@@ -118,8 +122,8 @@ void Simplifier::compact() {
   for (size_t i = 0; i < welding_.rep.size(); ++i)
     removed[order_.vertex_new[i]] = removed[order_.vertex_new[welding_.rep[i]]];
   write_output(mesh_, order_, removed,
-               {face_source_, corner_source_, face_bound_, welding_.corners, welding_.rep}, rep_,
-               &workers_);
+               {face_source_, corner_source_, face_bound_, welding_.corners, welding_.rep, turned_},
+               rep_, &workers_);
   if (!opt_.corner_sources) std::vector<uint32_t>().swap(rep_.corner_source);
 }
 

@@ -22,6 +22,10 @@ struct SlotRecords {
   // own copy, and the copy standing for each input vertex. Corners then need corner_source.
   const std::vector<uint32_t>& corners;
   const std::vector<uint32_t>& standing;
+  // Per input face, nonzero: turned over for the run, written back the other way (empty:
+  // none). An output face takes its first corner's (corner_source; its corners all come from
+  // one side of the constrained edges, and the edges between orientations are).
+  const std::vector<uint8_t>& turned;
 };
 
 // Rewrites `mesh` (internal order, dead slots holding kNone) as its live part in the input's

@@ -131,6 +131,25 @@ void Simplifier::prepare() {
   std::vector<uint8_t> reversed;
   rep_.reoriented_faces =
       orient_coherently(mesh_.triangles, topo_, face_source_.data(), reversed, &workers_);
+  TurnedByWelding turned;
+  if (welding_.same_way && rep_.reoriented_faces) {
+    // Pieces of split vertices written in different orientations agree for the run only: the
+    // output gives each face the orientation of the input faces it stands for.
+    std::vector<uint32_t> apart(t.size());
+    for (size_t f = 0; f < face_source_.size(); ++f)
+      for (int c = 0; c < 3; ++c)
+        apart[3 * f + c] = order_.vertex_new[welding_.corners[3 * size_t(face_source_[f]) + c]];
+    turned =
+        turned_by_welding(t, topo_, reversed, std::move(apart), face_source_.data(), &workers_);
+    if (!turned.faces.empty()) {
+      turned_.assign(face_source_.size() + rep_.dropped_degenerate_faces, 0); // by input face
+      rep_.reoriented_faces = 0; // those the output holds reversed
+      for (size_t f = 0; f < face_source_.size(); ++f) {
+        turned_[face_source_[f]] = turned.faces[f];
+        rep_.reoriented_faces += reversed[f] != turned.faces[f];
+      }
+    }
+  }
   {
     Options renumbered = opt_;
     std::vector<uint32_t> pairs;
@@ -142,6 +161,8 @@ void Simplifier::prepare() {
     if (opt_.split_vertices == SplitVertices::Seam) // each side keeps its copies
       for (uint32_t v : welding_.seams)
         pairs.push_back(order_.vertex_new[v]);
+    // No face across two orientations (already in the run's numbering).
+    pairs.insert(pairs.end(), turned.edges.begin(), turned.edges.end());
     if (!pairs.empty()) renumbered.constrained_edges = &pairs;
     rep_.constrained_edges = constraints_.build(renumbered, mesh_.positions.data(), t, topo_, n);
   }

@@ -201,6 +201,10 @@ class Simplifier {
   Constraints constraints_;
   SpatialOrder order_;
   Welding welding_; // split vertices welded for the run (Options::split_vertices)
+  // Per input face: turned over for the run only (pieces welded along edges both walked the
+  // same way, Welding::same_way); output faces take it back. Empty: the run's orientation is
+  // the output's.
+  std::vector<uint8_t> turned_;
   size_t faces_ = 0, vertices_ = 0, target_faces_ = 0, target_vertices_ = 0;
   size_t faces0_ = 0;
   double reference_area_ = 1; // mean input triangle area (LocalError's weight)

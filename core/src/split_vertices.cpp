@@ -112,23 +112,23 @@ Welding weld_split_vertices(std::vector<uint32_t>& tris, const std::vector<float
   std::vector<Edge>().swap(edges);
 
   // Two border edges at the same two positions, and no third: one edge of the surface.
+  // Walked the opposite ways, as by two faces of one oriented surface, or the same way: panels
+  // written in different orientations (a CAD export's, CGAL's boeing), turned to agree for the
+  // run (orientation.h) and given back their own on output. Left apart, every border vertex
+  // there is a twin, kept, and the interior alone paid for the target.
   Sets sets(n);
   sorted_runs(border, [&](size_t i, size_t j) {
-    // Walked the opposite ways, as by two faces of one oriented surface. (Welded the same way
-    // too, the panels of a CAD export written in random orientations became one piece whose
-    // minority was turned over: CGAL's boeing came out with half its area facing against the
-    // input's faces.)
-    if (j == i + 2 && cls[border[i].a] == cls[border[i + 1].b]) {
-      sets.join(border[i].a, border[i + 1].b);
-      sets.join(border[i].b, border[i + 1].a);
-    }
+    if (j != i + 2) return;
+    const Edge &e = border[i], &f = border[i + 1];
+    const bool opposite = cls[e.a] == cls[f.b];
+    sets.join(e.a, opposite ? f.b : f.a);
+    sets.join(e.b, opposite ? f.a : f.b);
   });
   std::vector<Edge>().swap(border);
 
   // A face that would hold one vertex twice (a sliver along the seam), or an edge that
-  // welding would give a third face or two faces walking it the same way (sets joined through
-  // other edges), keeps its copies apart: those sets are undone, until no such face or edge
-  // is left.
+  // welding would give a third face (sets joined through other edges), keeps its copies
+  // apart: those sets are undone, until no such face or edge is left.
   struct Walk {
     uint64_t key;         // the welded edge, either way
     uint32_t from, to, a; // welded ends as walked; the input's first end
@@ -156,14 +156,18 @@ Welding weld_split_vertices(std::vector<uint32_t>& tris, const std::vector<float
           walks.push_back({edge_key(r[k], r[(k + 1) % 3]), r[k], r[(k + 1) % 3], t[k]});
     }
     sorted_runs(walks, [&](size_t i, size_t j) {
-      const bool third = j - i > 2, same_way = j - i == 2 && walks[i].from == walks[i + 1].from &&
-                                               walks[i].a != walks[i + 1].a;
-      if (third || same_way) {
+      if (j - i > 2) {
         undo[walks[i].from] = undo[walks[i].to] = 1;
         again = true;
       }
     });
-    if (!again) break;
+    if (!again) { // the welded edges walked the same way (the input's own such edges aside)
+      sorted_runs(walks, [&](size_t i, size_t j) {
+        w.same_way +=
+            j == i + 2 && walks[i].from == walks[i + 1].from && walks[i].a != walks[i + 1].a;
+      });
+      break;
+    }
     std::vector<uint32_t> root(n);
     for (uint32_t v = 0; v < n; ++v)
       root[v] = sets.find(v);

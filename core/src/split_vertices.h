@@ -20,12 +20,16 @@ struct Welding {
   std::vector<uint32_t> seams;
   std::vector<uint32_t> corners; // the input's triangles, as given (each corner's own copy)
   size_t welded = 0;             // input vertices standing in another's place
+  // Welded edges both faces walk the same way: pieces written in different orientations,
+  // which the run turns to agree and the output gives back (orientation.h turned_by_welding).
+  size_t same_way = 0;
 };
 
 // Welds the vertices of `tris` whose border edges pair up with another's at the same two
-// positions, walked the other way (bit-for-bit equal coordinates; an edge position held by more
-// than two border edges is left alone), unless a face would then hold one vertex twice. Rewrites
-// `tris` to the standing copies. Costs one hash of the referenced positions when nothing is split.
+// positions, walked either way (bit-for-bit equal coordinates; an edge position held by more
+// than two border edges is left alone), unless a face would then hold one vertex twice or an
+// edge get a third face. Rewrites `tris` to the standing copies. Costs one hash of the
+// referenced positions when nothing is split.
 Welding weld_split_vertices(std::vector<uint32_t>& tris, const std::vector<float>& positions);
 
 } // namespace vrs

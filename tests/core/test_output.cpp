@@ -33,8 +33,10 @@ TEST(Output, VerticesAndFacesReturnToTheInputOrderWithTheirSources) {
   Case c;
   Report rep;
   const std::vector<uint32_t> unwelded;
+  const std::vector<uint8_t> none_turned;
   write_output(c.mesh, c.order, c.removed,
-               {c.face_source, c.corner_source, c.face_bound, unwelded, unwelded}, rep);
+               {c.face_source, c.corner_source, c.face_bound, unwelded, unwelded, none_turned},
+               rep);
   ASSERT_EQ(rep.vertices, 4u);
   ASSERT_EQ(rep.faces, 2u);
   // Inputs 0, 1, 3, 4 survive, in that order, with their own positions.
@@ -53,7 +55,9 @@ TEST(Output, WithoutCornerSourcesOrBoundsNoneIsReported) {
   Report rep;
   const std::vector<uint32_t> none;
   const std::vector<float> no_bound;
-  write_output(c.mesh, c.order, c.removed, {c.face_source, none, no_bound, none, none}, rep);
+  const std::vector<uint8_t> none_turned;
+  write_output(c.mesh, c.order, c.removed, {c.face_source, none, no_bound, none, none, none_turned},
+               rep);
   EXPECT_TRUE(rep.corner_source.empty());
   EXPECT_EQ(rep.error_bound, 0.0);
   EXPECT_EQ(rep.face_source.size(), 2u);

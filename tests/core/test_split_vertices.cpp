@@ -5,6 +5,7 @@
 
 #include <map>
 
+#include "geometry.h"
 #include "mesh_checks.h"
 #include "split_vertices.h"
 #include "test_meshes.h"
@@ -91,6 +92,82 @@ TEST(SplitVertices, ASeamIsSimplifiedAsOneSurfaceAndEachSideKeepsItsCopies) {
     }
     for (const auto& [edge, n] : vrs_test::edges_by_position(out))
       ASSERT_EQ(n, 2) << "a crack along the seam";
+  }
+}
+
+TEST(SplitVertices, PiecesWrittenInOtherOrientationsAreWeldedAndKeepTheirOwn) {
+  // A CAD export's panels, each written in its own orientation (CGAL's boeing): the lower
+  // half's faces turned over, its seam split. Left apart, every vertex of the seam was a twin
+  // on a border, kept; welded the same way (this run), the halves are one surface, the seam
+  // stays (no face across two orientations) and each face is written as its input was.
+  const Mesh whole = vrs_test::icosphere(3);
+  Mesh in = split(whole, [&](size_t f) { return upper(whole, f); });
+  for (size_t f = 0; f < in.face_count(); ++f)
+    if (!upper(whole, f)) std::swap(in.triangles[3 * f + 1], in.triangles[3 * f + 2]);
+  const size_t copies = in.vertex_count() - whole.vertex_count();
+  std::vector<int> side(in.vertex_count(), 0); // 1: a vertex of the upper half's faces only
+  for (size_t f = 0; f < in.face_count(); ++f)
+    for (int c = 0; c < 3; ++c)
+      if (upper(whole, f)) side[in.triangles[3 * f + c]] = 1;
+  for (SplitVertices mode : {SplitVertices::Weld, SplitVertices::Seam}) {
+    Options o;
+    o.target.ratio = 0.1;
+    o.split_vertices = mode;
+    o.corner_sources = true;
+    Mesh out = in;
+    const Report r = simplify(out, o);
+    EXPECT_EQ(r.welded_vertices, copies);
+    EXPECT_EQ(r.reoriented_faces, 0u) << "the output holds every face as its input was";
+    EXPECT_TRUE(r.target_reached) << r.stop_detail;
+    EXPECT_EQ(vrs_test::check_run(in, out, o, r), "");
+    size_t seam_removed = 0;
+    for (uint32_t v = uint32_t(whole.vertex_count()); v < in.vertex_count(); ++v)
+      seam_removed += r.remap[v] == kRemoved;
+    EXPECT_GT(seam_removed, 0u) << "the seam simplified along itself";
+    const auto from = input_of(r, out.vertex_count());
+    for (size_t f = 0; f < out.face_count(); ++f) {
+      const uint32_t* t = &out.triangles[3 * f];
+      const int s = side[from[t[0]]];
+      for (int c = 1; c < 3; ++c)
+        EXPECT_EQ(side[from[t[c]]], s) << "face " << f << " spans the seam";
+      // Outward on the upper half, inward on the lower, as written.
+      Vec3 p[3];
+      for (int c = 0; c < 3; ++c)
+        p[c] = {out.positions[3 * t[c]], out.positions[3 * t[c] + 1], out.positions[3 * t[c] + 2]};
+      const double outward = dot(cross(p[1] - p[0], p[2] - p[0]), p[0] + p[1] + p[2]);
+      EXPECT_EQ(outward > 0, s == 1) << "face " << f << " turned against its input";
+      // Its corners' data from input faces of its own half.
+      for (int c = 0; c < 3; ++c)
+        EXPECT_EQ(upper(whole, r.corner_source[3 * f + c] / 3), s == 1) << "face " << f;
+    }
+    for (const auto& [edge, n] : vrs_test::edges_by_position(out))
+      ASSERT_EQ(n, 2) << "a crack along the seam";
+  }
+}
+
+TEST(SplitVertices, AShuffledMeshWithASplitSeamComesOutCoherent) {
+  // Faces written in random orientation (every third turned) are turned to agree, as without
+  // split vertices: only whole pieces written in another orientation are given it back.
+  const Mesh whole = vrs_test::icosphere(3);
+  Mesh in = split(whole, [&](size_t f) { return upper(whole, f); });
+  for (size_t f = 0; f < in.face_count(); f += 3)
+    std::swap(in.triangles[3 * f + 1], in.triangles[3 * f + 2]);
+  Options o;
+  o.target.ratio = 0.1;
+  o.split_vertices = SplitVertices::Weld;
+  Mesh out = in;
+  const Report r = simplify(out, o);
+  EXPECT_EQ(r.welded_vertices, in.vertex_count() - whole.vertex_count());
+  EXPECT_EQ(r.reoriented_faces, (in.face_count() + 2) / 3);
+  EXPECT_TRUE(r.target_reached) << r.stop_detail;
+  EXPECT_EQ(vrs_test::check_run(in, out, o, r), "");
+  for (size_t f = 0; f < out.face_count(); ++f) {
+    Vec3 p[3];
+    for (int c = 0; c < 3; ++c)
+      p[c] = {out.positions[3 * out.triangles[3 * f + c]],
+              out.positions[3 * out.triangles[3 * f + c] + 1],
+              out.positions[3 * out.triangles[3 * f + c] + 2]};
+    EXPECT_GT(dot(cross(p[1] - p[0], p[2] - p[0]), p[0] + p[1] + p[2]), 0) << "face " << f;
   }
 }
 

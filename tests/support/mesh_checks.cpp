@@ -423,8 +423,21 @@ std::string check_run(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Opti
   vrs::Report r_w;
   const vrs::Mesh *src = &in, *dst = &out;
   const vrs::Report* rr = &r;
+  // Pieces written in different orientations and welded (split_vertices.h) are given back
+  // their own: the output holds the orientation of the pieces apart, each turned to agree
+  // within itself (a shuffled piece), and is judged against the input so oriented.
+  bool pieces_apart = false;
+  size_t apart_reoriented = 0;
+  vrs::Mesh apart;
   if (r.welded_vertices) {
-    in_w = in;
+    in_w = without_repeated_corner_faces(in);
+    vrs::Mesh probe = in_w;
+    vrs::weld_split_vertices(probe.triangles, probe.positions);
+    if (count_duplicate_directed_edges(probe) > count_duplicate_directed_edges(in_w)) {
+      pieces_apart = true;
+      apart_reoriented = orient_coherently(in_w);
+      apart = in_w;
+    }
     const vrs::Welding w = vrs::weld_split_vertices(in_w.triangles, in_w.positions);
     if (w.welded != r.welded_vertices) return "welded_vertices differs from the welding's count";
     std::vector<uint32_t> input_of(out.vertex_count(), 0);
@@ -440,7 +453,8 @@ std::string check_run(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Opti
   // Each edge map once; the input's own only when it differs from the cleaned one.
   // The surface as the core reads it: reoriented where the core says it did.
   vrs::Mesh clean = without_repeated_corner_faces(*src);
-  if (r.reoriented_faces && orient_coherently(clean) != r.reoriented_faces)
+  if (pieces_apart ? apart_reoriented != r.reoriented_faces
+                   : r.reoriented_faces && orient_coherently(clean) != r.reoriented_faces)
     return "reoriented_faces differs from the faces a coherent orientation reverses";
   const EdgeCounts clean_edges = edge_counts(clean), out_edges = edge_counts(*dst);
   const EdgeStats before = stats_of(clean, clean_edges), after = stats_of(*dst, out_edges);
@@ -459,7 +473,12 @@ std::string check_run(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Opti
   if (count_degenerate(*dst) > count_degenerate(clean)) return "new degenerate faces";
   // The corners' normals are the promise while the input-normal veto holds; it is eased, then
   // lifted (Report::relaxed_removals) to reach a target, the fold-over check below holds always.
-  if (size_t f = r.relaxed_removals ? 0 : count_flipped_new(clean, *dst, *rr))
+  // Pieces of other orientations welded: their faces' normals cancel at the welded vertices,
+  // where the core judged them turned to agree; each copy's own faces (the pieces apart) are
+  // one piece's, and the output's corners name the copies.
+  if (size_t f = r.relaxed_removals ? 0
+                 : pieces_apart     ? count_flipped_new(apart, out, r)
+                                    : count_flipped_new(clean, *dst, *rr))
     return std::to_string(f) + " new faces flipped against the input surface";
   if (size_t f = count_fold_overs(clean, *dst, *rr))
     return std::to_string(f) + " new faces fold over (against every input face near them)";

@@ -232,7 +232,9 @@ struct Report {
   size_t nonfinite_vertices = 0;       // NaN/inf coordinates: kept with their neighbours
   // Faces whose corners were reversed (second and third swapped) so that neighbours agree on
   // the orientation (in each connected piece, the one most of its faces had): a surface
-  // written in random orientation is simplified as the surface it is.
+  // written in random orientation is simplified as the surface it is. Pieces joined only by
+  // welded split vertices (split_vertices) agree for the run and are written back in their
+  // own orientation: not counted.
   size_t reoriented_faces = 0;
   size_t kept_boundary = 0, kept_nonmanifold = 0, kept_locked = 0, kept_high_valence = 0;
   // Vertices kept by the constrained edges (on one, or on more than two; or on the border).
