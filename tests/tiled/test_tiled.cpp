@@ -221,33 +221,45 @@ TEST(Tiled, ClosedMeshInManyTilesStaysWatertightAndKeepsInputVertices) {
 // crossing the equator where it went; "seam" keeps it as a polyline (simplified along itself,
 // no face across it); "keep" leaves the copies apart as borders (it stays whole); a bad name
 // is refused.
-TEST(Tiled, SplitVerticesAreWeldedTileByTile) {
-  const std::string dir = temp_dir();
-  const vrs::Mesh whole = vrs_test::icosphere(5); // 20 480 faces
-  auto upper = [&](size_t f) {
+// A sphere of 20 480 faces whose upper half has its own copies of the equator's vertices.
+struct SplitSphere {
+  vrs::Mesh whole = vrs_test::icosphere(5), in;
+  std::vector<uint8_t> used; // per vertex of `whole`: 1 used by lower faces, 2 by upper, 3 both
+  size_t equator = 0;
+  bool upper(size_t f) const {
     float z = 0;
     for (int c = 0; c < 3; ++c)
       z += whole.positions[3 * whole.triangles[3 * f + c] + 2];
     return z > 0;
-  };
-  vrs::Mesh in = whole;
-  std::vector<uint8_t> used(whole.vertex_count(), 0);
-  for (size_t f = 0; f < whole.face_count(); ++f)
-    for (int c = 0; c < 3; ++c)
-      used[whole.triangles[3 * f + c]] |= upper(f) ? 2 : 1;
-  std::vector<uint32_t> copy(whole.vertex_count(), vrs::kRemoved);
-  size_t equator = 0;
-  for (uint32_t v = 0; v < whole.vertex_count(); ++v)
-    if (used[v] == 3) {
-      copy[v] = uint32_t(in.vertex_count());
-      in.positions.insert(in.positions.end(), &whole.positions[3 * v], &whole.positions[3 * v] + 3);
-      ++equator;
+  }
+  // `lower_turned`: the lower half written in the other orientation (a CAD export's panels).
+  explicit SplitSphere(bool lower_turned) : in(whole), used(whole.vertex_count(), 0) {
+    for (size_t f = 0; f < whole.face_count(); ++f)
+      for (int c = 0; c < 3; ++c)
+        used[whole.triangles[3 * f + c]] |= upper(f) ? 2 : 1;
+    std::vector<uint32_t> copy(whole.vertex_count(), vrs::kRemoved);
+    for (uint32_t v = 0; v < whole.vertex_count(); ++v)
+      if (used[v] == 3) {
+        copy[v] = uint32_t(in.vertex_count());
+        in.positions.insert(in.positions.end(), &whole.positions[3 * v],
+                            &whole.positions[3 * v] + 3);
+        ++equator;
+      }
+    for (size_t f = 0; f < whole.face_count(); ++f) {
+      uint32_t* t = &in.triangles[3 * f];
+      for (int c = 0; c < 3 && upper(f); ++c)
+        if (copy[t[c]] != vrs::kRemoved) t[c] = copy[t[c]];
+      if (lower_turned && !upper(f)) std::swap(t[1], t[2]);
     }
-  for (size_t f = 0; f < whole.face_count(); ++f)
-    for (int c = 0; c < 3 && upper(f); ++c) {
-      uint32_t& v = in.triangles[3 * f + c];
-      if (copy[v] != vrs::kRemoved) v = copy[v];
-    }
+  }
+};
+
+TEST(Tiled, SplitVerticesAreWeldedTileByTile) {
+  const std::string dir = temp_dir();
+  const SplitSphere sphere(false);
+  const vrs::Mesh &whole = sphere.whole, &in = sphere.in;
+  const auto& used = sphere.used;
+  const size_t equator = sphere.equator;
   ASSERT_GT(equator, 100u);
   write_ply(dir + "/in.ply", in);
   std::set<std::array<float, 3>> inputs, on_equator;
@@ -314,6 +326,52 @@ TEST(Tiled, SplitVerticesAreWeldedTileByTile) {
   EXPECT_NE(run(dir + "/in.ply", dir + "/never.ply", 0.05, 1600000, 2, "glue")
                 .find("split_vertices must be seam, weld or keep"),
             std::string::npos);
+  vrs::tiled::discard(dir);
+}
+
+TEST(Tiled, PiecesWrittenInOtherOrientationsKeepTheirOwn) {
+  // As in core: the lower half's faces written turned over, its seam split, are welded to the
+  // upper half tile by tile, simplified along the seam, and written each as its input was.
+  const std::string dir = temp_dir();
+  const SplitSphere sphere(true);
+  write_ply(dir + "/in.ply", sphere.in);
+  ASSERT_EQ(run(dir + "/in.ply", dir + "/out.ply", 0.05, 1600000, 2, "weld"), "");
+  const vrs::Mesh out = read_output(dir + "/out.ply");
+  EXPECT_LE(out.face_count(), size_t(0.05 * 20480 * 1.005 + 2));
+  std::map<std::array<float, 3>, uint8_t> side;
+  for (uint32_t v = 0; v < sphere.whole.vertex_count(); ++v)
+    side[{sphere.whole.positions[3 * v], sphere.whole.positions[3 * v + 1],
+          sphere.whole.positions[3 * v + 2]}] = sphere.used[v];
+  std::set<std::array<float, 3>> on_equator; // positions: each is written twice
+  for (size_t v = 0; v < out.vertex_count(); ++v) {
+    const std::array<float, 3> x{out.positions[3 * v], out.positions[3 * v + 1],
+                                 out.positions[3 * v + 2]};
+    if (side[x] == 3) on_equator.insert(x);
+  }
+  size_t judged = 0;
+  EXPECT_LT(on_equator.size(), sphere.equator / 2) << "the seam simplified along itself";
+  for (size_t f = 0; f < out.face_count(); ++f) {
+    uint8_t sides = 0;
+    const float* p[3];
+    for (int c = 0; c < 3; ++c) {
+      const float* x = p[c] = &out.positions[3 * out.triangles[3 * f + c]];
+      const uint8_t u = side[{x[0], x[1], x[2]}];
+      sides |= u == 3 ? 0 : u;
+    }
+    ASSERT_NE(sides, 3) << "face " << f << " spans the seam";
+    if (!sides) continue; // all three on the seam
+    ++judged;
+    double e1[3], e2[3], sum[3];
+    for (int k = 0; k < 3; ++k)
+      e1[k] = p[1][k] - p[0][k], e2[k] = p[2][k] - p[0][k], sum[k] = p[0][k] + p[1][k] + p[2][k];
+    const double normal[3] = {e1[1] * e2[2] - e1[2] * e2[1], e1[2] * e2[0] - e1[0] * e2[2],
+                              e1[0] * e2[1] - e1[1] * e2[0]};
+    const bool outward = normal[0] * sum[0] + normal[1] * sum[1] + normal[2] * sum[2] > 0;
+    EXPECT_EQ(outward, sides == 2) << "face " << f << " turned against its input";
+  }
+  EXPECT_GT(judged, out.face_count() / 2);
+  for (const auto& [e, n] : vrs_test::edges_by_position(out))
+    ASSERT_EQ(n, 2) << "a crack along the seam";
   vrs::tiled::discard(dir);
 }
 
