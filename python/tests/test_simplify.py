@@ -253,6 +253,24 @@ def test_split_vertices_are_welded_for_the_run_and_split_again(sphere):
     assert np.isin(np.arange(len(sphere[0]), len(v)), kept.vertex_map).all()
 
 
+def test_pieces_written_in_other_orientations_keep_their_own(sphere):
+    # As in core, tiled runs and the CLI: the lower half written turned over (a CAD export's
+    # panels) is welded to the upper one and every face comes back as its input was.
+    v, f, copies, side = split_sphere(sphere)
+    lower = side[f].max(axis=1) == 0
+    f = f.copy()
+    f[lower] = f[lower][:, [0, 2, 1]]
+    r = vrsimplify.simplify(v, f, ratio=0.1)
+    assert r.report["input_issues"]["welded_vertices"] == copies
+    assert r.report["input_issues"]["reoriented_faces"] == 0
+    assert r.report["target_reached"]
+    s = side[r.vertex_map[r.faces]]
+    assert (s == s[:, :1]).all(), "a face spans the two orientations"
+    p = r.vertices[r.faces]
+    outward = np.einsum("ij,ij->i", np.cross(p[:, 1] - p[:, 0], p[:, 2] - p[:, 0]), p.sum(axis=1)) > 0
+    assert (outward == (s[:, 0] == 1)).all(), "a face turned against its input"
+
+
 def test_a_soup_welds_freely_when_asked(sphere):
     v, f = sphere
     soup_v, soup_f = v[f.ravel()], np.arange(f.size).reshape(-1, 3)
