@@ -216,7 +216,6 @@ TurnedByWelding turned_by_welding(const std::vector<uint32_t>& tris, const Topol
                                   const std::vector<uint8_t>& flipped, std::vector<uint32_t> apart,
                                   const uint32_t* rank, Workers* workers) {
   TurnedByWelding out;
-  if (flipped.empty()) return out;
   Topology apart_topo;
   apart_topo.build(apart, topo.vertex_count());
   std::vector<uint8_t> flipped_apart;
@@ -225,7 +224,8 @@ TurnedByWelding turned_by_welding(const std::vector<uint32_t>& tris, const Topol
   out.faces.assign(faces, 0);
   bool any = false;
   for (size_t f = 0; f < faces; ++f)
-    any |= out.faces[f] = flipped[f] != (!flipped_apart.empty() && flipped_apart[f]);
+    any |= out.faces[f] =
+        (!flipped.empty() && flipped[f]) != (!flipped_apart.empty() && flipped_apart[f]);
   if (!any) return TurnedByWelding{};
   const uint32_t* t = tris.data();
   for (size_t f = 0; f < faces; ++f) {

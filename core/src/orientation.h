@@ -23,8 +23,9 @@ size_t orient_coherently(std::vector<uint32_t>& tris, const Topology& topo, cons
                          std::vector<uint8_t>& flipped, Workers* workers = nullptr);
 
 // Pieces written in different orientations and welded along their seams (split_vertices.h)
-// were turned by orient_coherently (`flipped`, on the welded `tris` and `topo`) where the
-// pieces apart would not have been: `apart` holds the same faces unwelded, as given. The faces
+// were turned by orient_coherently (`flipped`, on the welded `tris` and `topo`; empty: none)
+// where the pieces apart would not have been, or the other way: `apart` holds the same faces
+// unwelded, as given. The faces
 // so turned, to be given back on output (a shuffled piece's faces stay turned, as without the
 // weld), and the edges between them and the others (pairs): kept, no face then spans two
 // orientations.

@@ -132,7 +132,7 @@ void Simplifier::prepare() {
   rep_.reoriented_faces =
       orient_coherently(mesh_.triangles, topo_, face_source_.data(), reversed, &workers_);
   TurnedByWelding turned;
-  if (welding_.same_way && rep_.reoriented_faces) {
+  if (welding_.same_way) {
     // Pieces of split vertices written in different orientations agree for the run only: the
     // output gives each face the orientation of the input faces it stands for.
     std::vector<uint32_t> apart(t.size());
@@ -146,7 +146,7 @@ void Simplifier::prepare() {
       rep_.reoriented_faces = 0; // those the output holds reversed
       for (size_t f = 0; f < face_source_.size(); ++f) {
         turned_[face_source_[f]] = turned.faces[f];
-        rep_.reoriented_faces += reversed[f] != turned.faces[f];
+        rep_.reoriented_faces += (!reversed.empty() && reversed[f]) != turned.faces[f];
       }
     }
   }

@@ -130,8 +130,8 @@ Welding weld_split_vertices(std::vector<uint32_t>& tris, const std::vector<float
   // welding would give a third face (sets joined through other edges), keeps its copies
   // apart: those sets are undone, until no such face or edge is left.
   struct Walk {
-    uint64_t key;         // the welded edge, either way
-    uint32_t from, to, a; // welded ends as walked; the input's first end
+    uint64_t key;            // the welded edge, either way
+    uint32_t from, to, a, b; // welded ends as walked; the input's ends
   };
   std::vector<Walk> walks;
   for (bool again = true; again;) {
@@ -153,7 +153,8 @@ Welding weld_split_vertices(std::vector<uint32_t>& tris, const std::vector<float
       const uint32_t r[3] = {a, b, c};
       for (int k = 0; k < 3; ++k)
         if (size[r[k]] > 1 || size[r[(k + 1) % 3]] > 1)
-          walks.push_back({edge_key(r[k], r[(k + 1) % 3]), r[k], r[(k + 1) % 3], t[k]});
+          walks.push_back(
+              {edge_key(r[k], r[(k + 1) % 3]), r[k], r[(k + 1) % 3], t[k], t[(k + 1) % 3]});
     }
     sorted_runs(walks, [&](size_t i, size_t j) {
       if (j - i > 2) {
@@ -163,8 +164,8 @@ Welding weld_split_vertices(std::vector<uint32_t>& tris, const std::vector<float
     });
     if (!again) { // the welded edges walked the same way (the input's own such edges aside)
       sorted_runs(walks, [&](size_t i, size_t j) {
-        w.same_way +=
-            j == i + 2 && walks[i].from == walks[i + 1].from && walks[i].a != walks[i + 1].a;
+        w.same_way += j == i + 2 && walks[i].from == walks[i + 1].from &&
+                      (walks[i].a != walks[i + 1].a || walks[i].b != walks[i + 1].b);
       });
       break;
     }

@@ -430,15 +430,17 @@ std::string check_run(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Opti
   size_t apart_reoriented = 0;
   vrs::Mesh apart;
   if (r.welded_vertices) {
-    in_w = without_repeated_corner_faces(in);
-    vrs::Mesh probe = in_w;
-    vrs::weld_split_vertices(probe.triangles, probe.positions);
-    if (count_duplicate_directed_edges(probe) > count_duplicate_directed_edges(in_w)) {
-      pieces_apart = true;
-      apart_reoriented = orient_coherently(in_w);
-      apart = in_w;
-    }
+    in_w = in;
     const vrs::Welding w = vrs::weld_split_vertices(in_w.triangles, in_w.positions);
+    apart = without_repeated_corner_faces(in);
+    if (count_duplicate_directed_edges(without_repeated_corner_faces(in_w)) >
+        count_duplicate_directed_edges(apart)) { // welded edges walked the same way
+      pieces_apart = true;
+      apart_reoriented = orient_coherently(apart);
+      in_w.triangles = apart.triangles;
+      for (uint32_t& v : in_w.triangles)
+        v = w.rep.empty() ? v : w.rep[v];
+    }
     if (w.welded != r.welded_vertices) return "welded_vertices differs from the welding's count";
     std::vector<uint32_t> input_of(out.vertex_count(), 0);
     r_w = r;
