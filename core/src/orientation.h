@@ -25,10 +25,9 @@ size_t orient_coherently(std::vector<uint32_t>& tris, const Topology& topo, cons
 // Pieces written in different orientations and welded along their seams (split_vertices.h)
 // were turned by orient_coherently (`flipped`, on the welded `tris` and `topo`; empty: none)
 // where the pieces apart would not have been, or the other way: `apart` holds the same faces
-// unwelded, as given. The faces
-// so turned, to be given back on output (a shuffled piece's faces stay turned, as without the
-// weld), and the edges between them and the others (pairs): kept, no face then spans two
-// orientations.
+// unwelded, as given. Returns the faces so turned, to be given back on output (a shuffled
+// piece's faces stay turned, as without the weld), and the edges between them and the others
+// (pairs): kept, so that no face spans two orientations.
 struct TurnedByWelding {
   std::vector<uint8_t> faces; // per face slot; empty: none
   std::vector<uint32_t> edges;

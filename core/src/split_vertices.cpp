@@ -156,17 +156,17 @@ Welding weld_split_vertices(std::vector<uint32_t>& tris, const std::vector<float
           walks.push_back(
               {edge_key(r[k], r[(k + 1) % 3]), r[k], r[(k + 1) % 3], t[k], t[(k + 1) % 3]});
     }
+    size_t same_way = 0; // welded edges walked the same way (the input's own such edges aside)
     sorted_runs(walks, [&](size_t i, size_t j) {
       if (j - i > 2) {
         undo[walks[i].from] = undo[walks[i].to] = 1;
         again = true;
       }
+      same_way += j == i + 2 && walks[i].from == walks[i + 1].from &&
+                  (walks[i].a != walks[i + 1].a || walks[i].b != walks[i + 1].b);
     });
-    if (!again) { // the welded edges walked the same way (the input's own such edges aside)
-      sorted_runs(walks, [&](size_t i, size_t j) {
-        w.same_way += j == i + 2 && walks[i].from == walks[i + 1].from &&
-                      (walks[i].a != walks[i + 1].a || walks[i].b != walks[i + 1].b);
-      });
+    if (!again) {
+      w.same_way = same_way;
       break;
     }
     std::vector<uint32_t> root(n);
