@@ -27,18 +27,13 @@ template <class Queue> bool Simplifier::relax(Queue& queue, bool after_jump) {
   // the next (after a jump, only the first is taken).
   // What the eased corner test no longer holds, the input itself does: from the first step on,
   // no new triangle may turn more than 90 degrees from the input face nearest it (the fold-over
-  // as the benchmark measures it). Only here: before, the corner test is stricter, and asked of
-  // every plan it cost threaded parts their thread at 10 % (p90 3.1 -> 3.5 on the 10 % runs).
-  // On the tuning set: 1 % p90 of the mean-error ratio to QECD 3.02 -> 1.87, runs > 1 % folded
-  // where QECD's are not 15 -> 3 (a plate with 16 tunnels stops clean at 268 faces instead of
-  // crumpling to 154); the price of a jump is measured from the removals before the easing.
-  if (relax_steps_ == 0) {
-    relaxed_from_ = rep_.max_removed_factor;
-    if (input_.kept()) { // built once, here or in prepare()
-      input_.build(eval_);
-      planner_.set_input(&input_);
-    }
-  }
+  // as the benchmark measures it). Before, only triangles over two input faces whose corners'
+  // normals are unsure answer to it (removal.cpp): asked of every plan it cost threaded parts
+  // their thread at 10 % (p90 3.1 -> 3.5 on the 10 % runs). On the tuning set: 1 % p90 of the
+  // mean-error ratio to QECD 3.02 -> 1.87, runs > 1 % folded where QECD's are not 15 -> 3 (a plate
+  // with 16 tunnels stops clean at 268 faces instead of crumpling to 154); the price of a jump is
+  // measured from the removals before the easing.
+  if (relax_steps_ == 0) relaxed_from_ = rep_.max_removed_factor;
   do {
     if (relax_steps_++ == 0 && limits_.agreeing_corners > 2) {
       limits_.agreeing_corners = 2;

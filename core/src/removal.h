@@ -65,8 +65,11 @@ class Planner {
   void set_face_bounds(const float* face_bound) { face_bound_ = face_bound; }
   // Judges fold-overs against the input (CarriedPoints::folds_input) too. nullptr: not.
   void set_carried(const CarriedPoints* carried) { carried_ = carried; }
-  // Judges fold-overs against the input's nearest faces too (InputSurface::folds). nullptr: not.
+  // Judges fold-overs against the input's nearest faces too (InputSurface::folds): every
+  // triangle in the eased passes, elsewhere those over kInputCheckCovers input faces whose
+  // corners' normals are unsure. nullptr: not.
   void set_input(const InputSurface* input) { input_ = input; }
+  static constexpr double kInputCheckCovers = 2.0;
 
  private:
   const Evaluator* eval_;

@@ -262,8 +262,11 @@ void Simplifier::prepare() {
   std::vector<Priced>().swap(first);
   std::vector<uint8_t>().swap(kinds);
   // Not when the target is asked at any cost (max_price_jump 0): the eased passes then fold
-  // where nothing else reaches it, as before.
-  if (opt_.against_input && opt_.relax_to_reach_target && opt_.max_price_jump > 0) input_.keep(t);
+  // where nothing else reaches it, as before. The hierarchy is built when a plan first asks.
+  if (opt_.against_input && opt_.relax_to_reach_target && opt_.max_price_jump > 0) {
+    input_.keep(t);
+    planner_.set_input(&input_);
+  }
 }
 
 } // namespace vrs
