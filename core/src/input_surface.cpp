@@ -192,7 +192,8 @@ bool InputSurface::any_agrees(Vec3 x, double r2, Vec3 n, const Evaluator& eval) 
   return false;
 }
 
-bool InputSurface::folds(const Patch& patch, const Evaluator& eval, double min_covers) const {
+bool InputSurface::folds(const Patch& patch, const Evaluator& eval, double min_covers,
+                         int max_side) const {
   build(eval);
   auto turned_at = [&](Vec3 x, Vec3 n) {
     double d2;
@@ -218,7 +219,8 @@ bool InputSurface::folds(const Patch& patch, const Evaluator& eval, double min_c
     // Clamped before the conversion: a triangle 1e37 times the mean input face (the fuzzer)
     // made a side past any int.
     const double side = std::ceil(std::sqrt(covers) * kGridPerSide);
-    const int L = side >= kGridMax ? kGridMax : side > 2 ? int(side) : 2;
+    const int most = std::max(2, std::min(kGridMax, max_side));
+    const int L = side >= most ? most : side > 2 ? int(side) : 2;
     for (int i = 0; i < L; ++i)
       for (int j = 0; i + j < L; ++j) {
         const int k = L - 1 - i - j; // the sub-triangle pointing up at (i, j, k)

@@ -36,8 +36,10 @@ class InputSurface {
   // grid of up to 36 points on a triangle that covers more than 16 input faces):
   // a fold-over as the benchmark measures one, against the input itself. Where several input
   // faces are nearest (an edge, a crease), one agreeing is enough.
-  // Triangles covering fewer than `min_covers` input faces (by area) are not asked.
-  bool folds(const Patch& patch, const Evaluator& eval, double min_covers = 0) const;
+  // Triangles covering fewer than `min_covers` input faces (by area) are not asked, and the
+  // grid's side is at most `max_side` (2: the four points).
+  bool folds(const Patch& patch, const Evaluator& eval, double min_covers = 0,
+             int max_side = kGridMax) const;
 
  private:
   static constexpr int kLeaf = 4;

@@ -27,7 +27,7 @@ void project(uint32_t v, const Ring& ring, Vec3 n, const Evaluator& eval, Patch&
 // nearest faces too; on smooth parts the corner test and the carried points judge alone: a
 // smooth mesh never builds the input's hierarchy (0.35 s and 19 MB at 1.2 M faces; at 18
 // degrees bunny00 x2 asked 478 times and was refused nothing; ungated, 2-4x the time), and the
-// tuning set folds as little (bench/ablation.md).
+// tuning set folds as little as at 18 degrees (bench/ablation.md).
 bool corners_unsure(const Ring& ring, const Patch& patch, const float* cones) {
   constexpr double kCornerCos = 0.7, kSpreadSin = 0.5;
   for (int t = 0; t < patch.count; ++t) {
@@ -119,13 +119,15 @@ Reject Planner::plan(uint32_t v, const Ring& ring, Vec3 n, Patch& out, double& c
         carried_->folds_input(v, ring, out, *eval_, normals_))
       why = RejectFoldOver;
     // The eased passes ask it of every triangle (their corner test no longer holds); the
-    // others of triangles over two input faces or more where the corners are unsure (a
-    // triangle across a thread's crest stands nearer the next flank: asked of the small
-    // ones too, the threads were lost and the tail grew, bench/ablation.md).
+    // others, at four points, of triangles over eight input faces or more where the corners
+    // are unsure (a triangle across a thread's crest stands nearer the next flank: asked of
+    // the small ones too, the threads were lost and the tail grew; over two faces, on the
+    // full grid, the tuning set folded less but took twice the time, bench/ablation.md).
     if (why == RejectCount && check_topology && input_) {
       const bool eased = limits_->agreeing_corners < 3;
       if ((eased || corners_unsure(ring, out, normals_)) &&
-          input_->folds(out, *eval_, eased ? 0.0 : kInputCheckCovers))
+          (eased ? input_->folds(out, *eval_)
+                 : input_->folds(out, *eval_, kInputCheckCovers, kInputCheckSide)))
         why = RejectFoldOver;
     }
     // A seam's sides are bounded together, by plan_seam.

@@ -67,9 +67,10 @@ class Planner {
   void set_carried(const CarriedPoints* carried) { carried_ = carried; }
   // Judges fold-overs against the input's nearest faces too (InputSurface::folds): every
   // triangle in the eased passes, elsewhere those over kInputCheckCovers input faces whose
-  // corners' normals are unsure. nullptr: not.
+  // corners' normals are unsure, at most kInputCheckSide grid cells a side. nullptr: not.
   void set_input(const InputSurface* input) { input_ = input; }
-  static constexpr double kInputCheckCovers = 2.0;
+  static constexpr double kInputCheckCovers = 8.0;
+  static constexpr int kInputCheckSide = 2;
 
  private:
   const Evaluator* eval_;

@@ -68,9 +68,9 @@ TEST(InputSurface, FoldsIsATriangleTurnedAgainstTheInputFaceNearestIt) {
   EXPECT_FALSE(input.folds(patch_of({1, 1, low}, {2, 3, low}, {3, 1, low}), eval));
 }
 
-// The normal passes ask only triangles over a couple of input faces (min_covers): a small
-// triangle turned over is let through there, and refused when every triangle is asked. The
-// hierarchy is built by the first question, without build().
+// The normal passes ask only triangles over a few input faces (min_covers): a small triangle
+// turned over is let through there, and refused when every triangle is asked. The hierarchy
+// is built by the first question, without build().
 TEST(InputSurface, SmallTrianglesAreNotAskedBelowMinCovers) {
   const vrs::Mesh plate = vrs_test::plate_with_holes(4, 4, {}, 0.2f, 8);
   const vrs::Evaluator eval = evaluator(plate);
