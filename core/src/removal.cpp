@@ -21,28 +21,6 @@ void project(uint32_t v, const Ring& ring, Vec3 n, const Evaluator& eval, Patch&
   out.normal = n;
 }
 
-// Whether the corners' input normals cannot vouch for a planned triangle: a corner whose
-// normal turns more than 45 degrees from it, or whose input faces spread more than 30 degrees
-// about it (a crease, a rim, a thin wall). Only there do the normal passes ask the input's
-// nearest faces too; on smooth parts the corner test and the carried points judge alone: a
-// smooth mesh never builds the input's hierarchy (0.35 s and 19 MB at 1.2 M faces; at 18
-// degrees bunny00 x2 asked 478 times and was refused nothing; ungated, 2-4x the time), and the
-// tuning set folds as little as at 18 degrees (bench/ablation.md).
-bool corners_unsure(const Ring& ring, const Patch& patch, const float* cones) {
-  constexpr double kCornerCos = 0.7, kSpreadSin = 0.5;
-  for (int t = 0; t < patch.count; ++t) {
-    const auto& tri = patch.tri[t];
-    const Vec3 a = patch.q[tri[0]];
-    const Vec3 face = normalized(cross(patch.q[tri[1]] - a, patch.q[tri[2]] - a));
-    for (int e = 0; e < 3; ++e) {
-      const float* cone = cones + 4 * size_t(ring.v[tri[e]]);
-      if (!(dot(face, Vec3{cone[0], cone[1], cone[2]}) >= kCornerCos) || cone[3] > kSpreadSin)
-        return true;
-    }
-  }
-  return false;
-}
-
 } // namespace
 
 bool star_direction(uint32_t v, const Ring& ring, const Evaluator& eval, Vec3& out) {
@@ -112,7 +90,9 @@ Reject Planner::plan(uint32_t v, const Ring& ring, Vec3 n, Patch& out, double& c
   auto vetoed = [&](bool plane_angle) {
     // Topology first (it cannot change with the projection), then shape.
     Reject why = check_topology ? veto_topology(ring, out, open, *topo_, tris_) : RejectCount;
-    if (why == RejectCount) why = veto_shape(ring, out, replaced, normals_, *limits_, plane_angle);
+    bool unsure = false;
+    if (why == RejectCount)
+      why = veto_shape(ring, out, replaced, normals_, *limits_, plane_angle, &unsure);
     // Judged against the input where the mesh look-ups are (the plan that commits), not in
     // every pricing pass: it walks every point the old faces carry (a tenth of the time).
     if (why == RejectCount && check_topology && carried_ &&
@@ -122,10 +102,13 @@ Reject Planner::plan(uint32_t v, const Ring& ring, Vec3 n, Patch& out, double& c
     // others, at four points, of triangles over eight input faces or more where the corners
     // are unsure (a triangle across a thread's crest stands nearer the next flank: asked of
     // the small ones too, the threads were lost and the tail grew; over two faces, on the
-    // full grid, the tuning set folded less but took twice the time, bench/ablation.md).
+    // full grid, the tuning set folded less but took twice the time). Only unsure corners
+    // ask: a smooth mesh never builds the input's hierarchy (0.35 s and 19 MB at 1.2 M faces;
+    // gated at 18 degrees bunny00 x2 asked 478 times and was refused nothing; ungated, 2-4x
+    // the time), and the tuning set folds as little as at 18 degrees (bench/ablation.md).
     if (why == RejectCount && check_topology && input_) {
       const bool eased = limits_->agreeing_corners < 3;
-      if ((eased || corners_unsure(ring, out, normals_)) &&
+      if ((eased || unsure) &&
           (eased ? input_->folds(out, *eval_)
                  : input_->folds(out, *eval_, kInputCheckCovers, kInputCheckSide)))
         why = RejectFoldOver;

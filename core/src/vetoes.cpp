@@ -57,7 +57,8 @@ void replaced_face_normals(uint32_t v, const Ring& ring, const Patch& patch, con
 
 Reject veto_triangle(const Ring& ring, const Patch& patch, std::array<uint8_t, 3> tri,
                      const FaceNormals& old_n, const float* surface_normals,
-                     const RemovalLimits& limits, bool plane_angle) {
+                     const RemovalLimits& limits, bool plane_angle, bool* unsure) {
+  constexpr double kSureCos = 0.7, kSureSpreadSin = 0.5;
   const int k = ring.verts;
   const auto& q = patch.q;
   auto folds_on = [&](Vec3 face, int i) { return !(dot(face, old_n[i]) > limits.min_fold_cos); };
@@ -68,7 +69,9 @@ Reject veto_triangle(const Ring& ring, const Patch& patch, std::array<uint8_t, 3
   int agreeing = 0;
   for (int e = 0; e < 3; ++e) {
     const float* sn = surface_normals + 4 * size_t(ring.v[tri[e]]);
-    agreeing += dot(face, Vec3{sn[0], sn[1], sn[2]}) > 0;
+    const double d = dot(face, Vec3{sn[0], sn[1], sn[2]});
+    agreeing += d > 0;
+    if (unsure && (!(d >= kSureCos) || sn[3] > kSureSpreadSin)) *unsure = true;
   }
   if (agreeing < limits.agreeing_corners) return RejectFlip;
   // The faces it replaces: the old face on each of its ring edges; a triangle made of
@@ -92,10 +95,11 @@ Reject veto_triangle(const Ring& ring, const Patch& patch, std::array<uint8_t, 3
 }
 
 Reject veto_shape(const Ring& ring, const Patch& patch, const FaceNormals& old_n,
-                  const float* surface_normals, const RemovalLimits& limits, bool plane_angle) {
+                  const float* surface_normals, const RemovalLimits& limits, bool plane_angle,
+                  bool* unsure) {
   for (int t = 0; t < patch.count; ++t) {
-    const Reject why =
-        veto_triangle(ring, patch, patch.tri[t], old_n, surface_normals, limits, plane_angle);
+    const Reject why = veto_triangle(ring, patch, patch.tri[t], old_n, surface_normals, limits,
+                                     plane_angle, unsure);
     if (why != RejectCount) return why;
   }
   return RejectCount;

@@ -39,21 +39,27 @@ Reject veto_topology(const Ring& ring, const Patch& patch, OpenRing open, const 
                      const uint32_t* tris);
 
 // Shape: no sliver, no triangle facing against the input surface at its corners
-// (`surface_normals`, 3 floats a vertex; see limits.agreeing_corners), none turned over against the
-// face(s) it replaces, and, when `plane_angle` (fillings made on the projection plane), none
-// steeper than limits.min_normal_cos to that plane.
+// (`surface_normals`: 4 floats a vertex, the unit normal and the sine of its faces' spread about
+// it; see limits.agreeing_corners), none turned over against the face(s) it replaces, and, when
+// `plane_angle` (fillings made on the projection plane), none steeper than limits.min_normal_cos
+// to that plane.
 // `replaced`: the unit normals of the ring's faces (replaced_face_normals), the same for every
 // candidate of one plan, so made once.
+// `unsure` (when given, of a patch no veto refuses): set if a corner cannot vouch for its
+// triangle, its normal more than 45 degrees from it or its faces spreading more than 30 degrees
+// about it (a crease, a rim, a thin wall): there the planner asks the input itself. Told here,
+// where the corners are compared anyway, not by a second pass over the patch.
 using FaceNormals = UnsetArray<Vec3, kMaxRing>;
 void replaced_face_normals(uint32_t v, const Ring& ring, const Patch& patch, const Evaluator& eval,
                            FaceNormals& out);
 Reject veto_shape(const Ring& ring, const Patch& patch, const FaceNormals& replaced,
-                  const float* surface_normals, const RemovalLimits& limits, bool plane_angle);
+                  const float* surface_normals, const RemovalLimits& limits, bool plane_angle,
+                  bool* unsure = nullptr);
 
 // veto_shape for one new triangle (ring positions `tri`, counter-clockwise).
 Reject veto_triangle(const Ring& ring, const Patch& patch, std::array<uint8_t, 3> tri,
                      const FaceNormals& replaced, const float* surface_normals,
-                     const RemovalLimits& limits, bool plane_angle);
+                     const RemovalLimits& limits, bool plane_angle, bool* unsure = nullptr);
 
 // Error bound (error_bound.h): the patch must project one-to-one with the fan it replaces, and
 // every new face's certified bound (written into patch.bound) must stay within

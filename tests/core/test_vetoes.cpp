@@ -52,6 +52,35 @@ TEST(Vetoes, FoldOverRefusesAFanTurnedOverTheFaceItReplaces) {
             RejectFlip);
 }
 
+// The corners tell whether they can vouch for an accepted patch: flat and alike they can; one
+// turned 60 degrees from the patch, or one whose faces spread wide (a crease, a thin wall), cannot,
+// and the planner then asks the input itself.
+TEST(Vetoes, CornersSayWhenTheyCannotVouchForAPatch) {
+  RingCase s;
+  s.mesh = vrs_test::hexagon_fan();
+  open_ring(s, 6);
+  Evaluator eval(Mode::Surface3D, {0, 0, 1}, s.mesh.positions.data());
+  Patch p = projected(s, 6, {0, 0, 1});
+  ASSERT_TRUE(fill_candidate(s.ring, OpenRing::Border, 1, p));
+  auto unsure = [&] {
+    bool u = false;
+    EXPECT_EQ(
+        veto_shape(s.ring, p, replaced(s, p, eval), s.normals.data(), RemovalLimits{}, false, &u),
+        RejectCount);
+    return u;
+  };
+  EXPECT_FALSE(unsure());
+  const uint32_t corner = s.ring.v[2];
+  float* n = s.normals.data() + 4 * size_t(corner);
+  n[0] = 0.866f, n[1] = 0, n[2] = 0.5f; // 60 degrees off, still on the patch's side
+  EXPECT_TRUE(unsure());
+  n[0] = 0, n[2] = 1;
+  n[3] = 0.6f; // its faces spread about 37 degrees
+  EXPECT_TRUE(unsure());
+  n[3] = 0.1f;
+  EXPECT_FALSE(unsure());
+}
+
 TEST(Vetoes, TopologyRefusesATriangleThatAlreadyExists) {
   RingCase s;
   s.mesh = vrs_test::tetrahedron();
