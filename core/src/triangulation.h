@@ -24,6 +24,10 @@ struct Patch {
   UnsetArray<Vec2, kMaxRing + 1> p;
   // With an error bound tracked (error_bound.h): each new triangle's certified bound.
   std::array<float, kMaxRing> bound;
+  // Set by the shape veto: some corner's input normal cannot vouch for its new triangle (a
+  // crease, a rim, a thin wall, vetoes.h). The planner then asks the input, the price counts
+  // the surface moved (patch_error).
+  bool corners_unsure = false;
 };
 
 bool is_convex(const Vec2* p, int k);

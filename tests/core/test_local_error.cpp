@@ -30,7 +30,8 @@ struct Planned {
   Reject why;
 };
 
-Planned plan_centre(const Mesh& m, uint32_t v, Vec3 normal) {
+// `spread`: the sine of vertex 0's faces' spread about its normal.
+Planned plan_centre(const Mesh& m, uint32_t v, Vec3 normal, float spread = 0) {
   Topology t;
   t.build(m.triangles, m.vertex_count());
   Planned p;
@@ -39,6 +40,7 @@ Planned plan_centre(const Mesh& m, uint32_t v, Vec3 normal) {
   std::vector<float> up(4 * m.vertex_count(), 0.0f); // normal cones: +z, no spread
   for (size_t i = 2; i < up.size(); i += 4)
     up[i] = 1.0f;
+  up[3] = spread;
   // The projection only: these tests pin the error of the paper's filling.
   RemovalLimits limits;
   double cost = 0;
@@ -91,6 +93,48 @@ TEST(LocalError, FlatRingCostsNothingRaisedRingCostsItsHeight) {
     // A four times smaller reference doubles it (the weight is sqrt(area / reference)).
     EXPECT_NEAR(patch_error(6, p.ring, p.patch, eval, fan_area / 4), 2 * h, 1e-6);
   }
+}
+
+// Where the corners cannot vouch for a patch (a crease, a rim, a thin wall), the price counts
+// the surface moved: of two pyramids of one height, the wider moves the more surface, and its
+// price grows faster than the local price does; smooth patches keep the local price.
+TEST(LocalError, UnsureCornersAreAlsoPricedByTheSurfaceMoved) {
+  const float h = 0.25f;
+  double local[2], unsure[2];
+  for (int wide = 0; wide < 2; ++wide) {
+    Mesh m = vrs_test::hexagon_fan(h);
+    for (size_t i = 0; i < m.positions.size(); i += 3) // twice as wide, as high
+      for (int c = 0; c < 2; ++c)
+        m.positions[i + c] *= wide ? 2.0f : 1.0f;
+    Planned p = plan_centre(m, 6, {0, 0, 1});
+    ASSERT_EQ(p.why, RejectCount);
+    EXPECT_FALSE(p.patch.corners_unsure); // every corner's normal is the patch's
+    Evaluator eval(Mode::Surface3D, {0, 0, 1}, m.positions.data());
+    local[wide] = patch_error(6, p.ring, p.patch, eval, 1.0);
+    // The old fan stands h/3 over the new patch at its faces' centroids, h/2 halfway to the
+    // apex: 5h/12 times its area; the new patch adds its own distance to the old fan, under h.
+    double old_area = 0, new_area = 0;
+    for (int i = 0; i < 6; ++i)
+      old_area += 0.5 * length(cross(eval.position(i) - eval.position(6),
+                                     eval.position((i + 1) % 6) - eval.position(6)));
+    for (int t = 0; t < p.patch.count; ++t) {
+      const auto& tri = p.patch.tri[t];
+      new_area += 0.5 * length(cross(p.patch.q[tri[1]] - p.patch.q[tri[0]],
+                                     p.patch.q[tri[2]] - p.patch.q[tri[0]]));
+    }
+    const OldFan fan(6, p.ring, p.patch, eval);
+    const double moved = moved_surface(fan, p.ring, p.patch, eval.position(6));
+    EXPECT_NEAR(moved - old_area * 5 * h / 12, new_area * h / 2, new_area * h / 2);
+    p.patch.corners_unsure = true;
+    unsure[wide] = patch_error(6, p.ring, p.patch, eval, 1.0);
+    EXPECT_GE(unsure[wide], local[wide]);
+    EXPECT_NEAR(unsure[wide], std::max(local[wide], std::sqrt(local[wide] * moved)), 1e-12);
+  }
+  EXPECT_GT(unsure[1] / unsure[0], 1.3 * local[1] / local[0]);
+  // A ring vertex whose faces spread wide makes the planner's patch unsure.
+  Planned spread = plan_centre(vrs_test::hexagon_fan(h), 6, {0, 0, 1}, 0.6f);
+  ASSERT_EQ(spread.why, RejectCount);
+  EXPECT_TRUE(spread.patch.corners_unsure);
 }
 
 TEST(LocalError, ASaddleIsPricedByItsFarthestNewPoint) {
