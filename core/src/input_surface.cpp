@@ -9,7 +9,7 @@
 
 namespace vrs {
 
-void InputSurface::order_faces(const Evaluator& eval) {
+void InputSurface::order_faces(const Evaluator& eval) const {
   // Top-down median splits on the centroids' widest axis, into the implicit layout the levels
   // read: a node of 2^l leaf slots gives its left child exactly 2^(l-1) * kLeaf faces (or all
   // it has), so node i of a level has children 2i and 2i + 1 below.
@@ -60,10 +60,10 @@ void InputSurface::order_faces(const Evaluator& eval) {
 }
 
 void InputSurface::build(const Evaluator& eval) const {
-  std::call_once(build_once_, [&] { const_cast<InputSurface*>(this)->build_now(eval); });
+  std::call_once(build_once_, [&] { build_now(eval); });
 }
 
-void InputSurface::build_now(const Evaluator& eval) {
+void InputSurface::build_now(const Evaluator& eval) const {
   size_t kept = 0;
   for (size_t i = 0; i + 2 < tris_.size(); i += 3) {
     const Vec3 a = eval.position(tris_[i]), b = eval.position(tris_[i + 1]),

@@ -49,14 +49,14 @@ class InputSurface {
     float lo[3], hi[3];
   };
   double box_distance2(const Box& b, Vec3 x) const;
-  void order_faces(const Evaluator& eval); // the leaves' order, a median split at each level
+  void order_faces(const Evaluator& eval) const; // the leaves' order, a median split at each level
   // Whether any face within sqrt(r2) of x has a normal with a positive dot product with n.
   bool any_agrees(Vec3 x, double r2, Vec3 n, const Evaluator& eval) const;
   Vec3 face_normal(size_t f, const Evaluator& eval) const;
 
-  void build_now(const Evaluator& eval);
-
-  // Written once, under build_once_, before any reader sees them.
+  // Writes the mutable members below: const because the hierarchy is built on first use,
+  // under build_once_, before any reader sees them.
+  void build_now(const Evaluator& eval) const;
   mutable std::once_flag build_once_;
   mutable std::vector<uint32_t> tris_;           // 3 a face, faces with area only
   mutable double mean_area_ = 0;                 // of the input's faces with area
