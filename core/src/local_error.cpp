@@ -174,9 +174,11 @@ double patch_error(uint32_t v, const Ring& ring, const Patch& patch, const Evalu
     to_new = d * d;
   }
   const double local = std::sqrt(std::max(worst, to_new)) * std::sqrt(area / reference_area);
-  // Smooth patches keep the local price alone: priced so everywhere, bunny00 x2 to 10 % took
-  // 1.7x the time for 4 % more mean error and 19 % more max error (bench/ablation.md).
-  if (!patch.corners_unsure || patch.count == 0) return local;
+  // Elsewhere the local price alone: priced so everywhere, bunny00 x2 to 10 % took 1.7x the
+  // time for 4 % more mean error and 19 % more max error; wherever a corner was turned from its
+  // triangle (coarse organic meshes too), mushroom at 1 % lost a fifth of its accuracy and its
+  // target (bench/ablation.md).
+  if (!(patch.corner_doubts & kCornerOnCrease) || patch.count == 0) return local;
   return std::max(local, std::sqrt(local * moved_surface(fan, ring, patch, c) / reference_area));
 }
 

@@ -47,8 +47,8 @@ double triangle_error2(const OldFan& fan, const Ring& ring, const Patch& patch, 
 // weighted by sqrt(fan area / reference_area): the same offset over a wider patch moves more
 // surface. On the benchmark's 18 real cases the weight took the geometric mean of our mean
 // error over QECD's from 1.64 to 1.41 (exponents 0.25 and 0.75 measured worse).
-// Where the patch's corners are unsure (Patch::corners_unsure: creases, rims, thin walls) the
-// farthest point misjudges what moves: a fillet's middle dropped is far but moves a sliver, a
+// Where a corner lies on a crease of the input (kCornerOnCrease: a crease, a rim, a thin wall)
+// the farthest point misjudges what moves: a fillet's middle dropped is far but moves a sliver, a
 // wall tilted by its foot is near but moves the wall. There the price is at least the geometric
 // mean of that and the surface moved (moved_surface / reference_area), which grows with the
 // patch's size as the local price does, so price jumps keep their meaning.

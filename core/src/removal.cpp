@@ -90,9 +90,9 @@ Reject Planner::plan(uint32_t v, const Ring& ring, Vec3 n, Patch& out, double& c
   auto vetoed = [&](bool plane_angle) {
     // Topology first (it cannot change with the projection), then shape.
     Reject why = check_topology ? veto_topology(ring, out, open, *topo_, tris_) : RejectCount;
-    out.corners_unsure = false;
+    out.corner_doubts = 0;
     if (why == RejectCount)
-      why = veto_shape(ring, out, replaced, normals_, *limits_, plane_angle, &out.corners_unsure);
+      why = veto_shape(ring, out, replaced, normals_, *limits_, plane_angle, &out.corner_doubts);
     // Judged against the input where the mesh look-ups are (the plan that commits), not in
     // every pricing pass: it walks every point the old faces carry (a tenth of the time).
     if (why == RejectCount && check_topology && carried_ &&
@@ -108,7 +108,7 @@ Reject Planner::plan(uint32_t v, const Ring& ring, Vec3 n, Patch& out, double& c
     // the time), and the tuning set folds as little as at 18 degrees (bench/ablation.md).
     if (why == RejectCount && check_topology && input_) {
       const bool eased = limits_->agreeing_corners < 3;
-      if ((eased || out.corners_unsure) &&
+      if ((eased || out.corner_doubts) &&
           (eased ? input_->folds(out, *eval_)
                  : input_->folds(out, *eval_, kInputCheckCovers, kInputCheckSide)))
         why = RejectFoldOver;

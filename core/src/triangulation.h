@@ -24,10 +24,15 @@ struct Patch {
   UnsetArray<Vec2, kMaxRing + 1> p;
   // With an error bound tracked (error_bound.h): each new triangle's certified bound.
   std::array<float, kMaxRing> bound;
-  // Set by the shape veto: some corner's input normal cannot vouch for its new triangle (a
-  // crease, a rim, a thin wall, vetoes.h). The planner then asks the input, the price counts
-  // the surface moved (patch_error).
-  bool corners_unsure = false;
+  // Set by the shape veto (vetoes.h): why some corner's input normal cannot vouch for its new
+  // triangle (CornerDoubt bits). Then the planner asks the input itself; on a crease the price
+  // counts the surface moved too (patch_error).
+  uint8_t corner_doubts = 0;
+};
+
+enum CornerDoubt : uint8_t {
+  kCornerTurned = 1,   // its normal more than 45 degrees from the triangle
+  kCornerOnCrease = 2, // its input faces spread more than 30 degrees: a crease, a rim, a thin wall
 };
 
 bool is_convex(const Vec2* p, int k);

@@ -57,8 +57,8 @@ void replaced_face_normals(uint32_t v, const Ring& ring, const Patch& patch, con
 
 Reject veto_triangle(const Ring& ring, const Patch& patch, std::array<uint8_t, 3> tri,
                      const FaceNormals& old_n, const float* surface_normals,
-                     const RemovalLimits& limits, bool plane_angle, bool* unsure) {
-  constexpr double kSureCos = 0.7, kSureSpreadSin = 0.5;
+                     const RemovalLimits& limits, bool plane_angle, uint8_t* doubts) {
+  constexpr double kSureCos = 0.7, kCreaseSpreadSin = 0.5;
   const int k = ring.verts;
   const auto& q = patch.q;
   auto folds_on = [&](Vec3 face, int i) { return !(dot(face, old_n[i]) > limits.min_fold_cos); };
@@ -71,7 +71,8 @@ Reject veto_triangle(const Ring& ring, const Patch& patch, std::array<uint8_t, 3
     const float* sn = surface_normals + 4 * size_t(ring.v[tri[e]]);
     const double d = dot(face, Vec3{sn[0], sn[1], sn[2]});
     agreeing += d > 0;
-    if (unsure && (!(d >= kSureCos) || sn[3] > kSureSpreadSin)) *unsure = true;
+    if (doubts && !(d >= kSureCos)) *doubts |= kCornerTurned;
+    if (doubts && sn[3] > kCreaseSpreadSin) *doubts |= kCornerOnCrease;
   }
   if (agreeing < limits.agreeing_corners) return RejectFlip;
   // The faces it replaces: the old face on each of its ring edges; a triangle made of
@@ -96,10 +97,10 @@ Reject veto_triangle(const Ring& ring, const Patch& patch, std::array<uint8_t, 3
 
 Reject veto_shape(const Ring& ring, const Patch& patch, const FaceNormals& old_n,
                   const float* surface_normals, const RemovalLimits& limits, bool plane_angle,
-                  bool* unsure) {
+                  uint8_t* doubts) {
   for (int t = 0; t < patch.count; ++t) {
     const Reject why = veto_triangle(ring, patch, patch.tri[t], old_n, surface_normals, limits,
-                                     plane_angle, unsure);
+                                     plane_angle, doubts);
     if (why != RejectCount) return why;
   }
   return RejectCount;

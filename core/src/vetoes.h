@@ -45,21 +45,21 @@ Reject veto_topology(const Ring& ring, const Patch& patch, OpenRing open, const 
 // to that plane.
 // `replaced`: the unit normals of the ring's faces (replaced_face_normals), the same for every
 // candidate of one plan, so made once.
-// `unsure` (when given, of a patch no veto refuses): set if a corner cannot vouch for its
-// triangle, its normal more than 45 degrees from it or its faces spreading more than 30 degrees
-// about it (a crease, a rim, a thin wall): there the planner asks the input itself. Told here,
-// where the corners are compared anyway, not by a second pass over the patch.
+// `doubts` (when given, of a patch no veto refuses): the CornerDoubt bits of corners that cannot
+// vouch for their triangle, their normal more than 45 degrees from it or their faces spreading
+// more than 30 degrees about them (a crease, a rim, a thin wall): there the planner asks the
+// input itself. Told here, where the corners are compared anyway, not by a second pass.
 using FaceNormals = UnsetArray<Vec3, kMaxRing>;
 void replaced_face_normals(uint32_t v, const Ring& ring, const Patch& patch, const Evaluator& eval,
                            FaceNormals& out);
 Reject veto_shape(const Ring& ring, const Patch& patch, const FaceNormals& replaced,
                   const float* surface_normals, const RemovalLimits& limits, bool plane_angle,
-                  bool* unsure = nullptr);
+                  uint8_t* doubts = nullptr);
 
 // veto_shape for one new triangle (ring positions `tri`, counter-clockwise).
 Reject veto_triangle(const Ring& ring, const Patch& patch, std::array<uint8_t, 3> tri,
                      const FaceNormals& replaced, const float* surface_normals,
-                     const RemovalLimits& limits, bool plane_angle, bool* unsure = nullptr);
+                     const RemovalLimits& limits, bool plane_angle, uint8_t* doubts = nullptr);
 
 // Error bound (error_bound.h): the patch must project one-to-one with the fan it replaces, and
 // every new face's certified bound (written into patch.bound) must stay within

@@ -95,12 +95,13 @@ TEST(LocalError, FlatRingCostsNothingRaisedRingCostsItsHeight) {
   }
 }
 
-// Where the corners cannot vouch for a patch (a crease, a rim, a thin wall), the price counts
+// Where a corner lies on a crease of the input (a crease, a rim, a thin wall), the price counts
 // the surface moved: of two pyramids of one height, the wider moves the more surface, and its
-// price grows faster than the local price does; smooth patches keep the local price.
-TEST(LocalError, UnsureCornersAreAlsoPricedByTheSurfaceMoved) {
+// price grows faster than the local price does; smooth patches, and corners only turned from
+// their triangle (a coarse patch of a smooth surface), keep the local price.
+TEST(LocalError, CornersOnACreaseAreAlsoPricedByTheSurfaceMoved) {
   const float h = 0.25f;
-  double local[2], unsure[2];
+  double local[2], crease[2];
   for (int wide = 0; wide < 2; ++wide) {
     Mesh m = vrs_test::hexagon_fan(h);
     for (size_t i = 0; i < m.positions.size(); i += 3) // twice as wide, as high
@@ -108,7 +109,7 @@ TEST(LocalError, UnsureCornersAreAlsoPricedByTheSurfaceMoved) {
         m.positions[i + c] *= wide ? 2.0f : 1.0f;
     Planned p = plan_centre(m, 6, {0, 0, 1});
     ASSERT_EQ(p.why, RejectCount);
-    EXPECT_FALSE(p.patch.corners_unsure); // every corner's normal is the patch's
+    EXPECT_EQ(p.patch.corner_doubts, 0); // every corner's normal is the patch's
     Evaluator eval(Mode::Surface3D, {0, 0, 1}, m.positions.data());
     local[wide] = patch_error(6, p.ring, p.patch, eval, 1.0);
     // The old fan stands h/3 over the new patch at its faces' centroids, h/2 halfway to the
@@ -125,16 +126,18 @@ TEST(LocalError, UnsureCornersAreAlsoPricedByTheSurfaceMoved) {
     const OldFan fan(6, p.ring, p.patch, eval);
     const double moved = moved_surface(fan, p.ring, p.patch, eval.position(6));
     EXPECT_NEAR(moved - old_area * 5 * h / 12, new_area * h / 2, new_area * h / 2);
-    p.patch.corners_unsure = true;
-    unsure[wide] = patch_error(6, p.ring, p.patch, eval, 1.0);
-    EXPECT_GE(unsure[wide], local[wide]);
-    EXPECT_NEAR(unsure[wide], std::max(local[wide], std::sqrt(local[wide] * moved)), 1e-12);
+    p.patch.corner_doubts = kCornerTurned;
+    EXPECT_EQ(patch_error(6, p.ring, p.patch, eval, 1.0), local[wide]);
+    p.patch.corner_doubts = kCornerOnCrease;
+    crease[wide] = patch_error(6, p.ring, p.patch, eval, 1.0);
+    EXPECT_GE(crease[wide], local[wide]);
+    EXPECT_NEAR(crease[wide], std::max(local[wide], std::sqrt(local[wide] * moved)), 1e-12);
   }
-  EXPECT_GT(unsure[1] / unsure[0], 1.3 * local[1] / local[0]);
-  // A ring vertex whose faces spread wide makes the planner's patch unsure.
+  EXPECT_GT(crease[1] / crease[0], 1.3 * local[1] / local[0]);
+  // A ring vertex whose faces spread wide puts the planner's patch on a crease.
   Planned spread = plan_centre(vrs_test::hexagon_fan(h), 6, {0, 0, 1}, 0.6f);
   ASSERT_EQ(spread.why, RejectCount);
-  EXPECT_TRUE(spread.patch.corners_unsure);
+  EXPECT_EQ(spread.patch.corner_doubts, kCornerOnCrease);
 }
 
 TEST(LocalError, ASaddleIsPricedByItsFarthestNewPoint) {

@@ -52,9 +52,10 @@ TEST(Vetoes, FoldOverRefusesAFanTurnedOverTheFaceItReplaces) {
             RejectFlip);
 }
 
-// The corners tell whether they can vouch for an accepted patch: flat and alike they can; one
-// turned 60 degrees from the patch, or one whose faces spread wide (a crease, a thin wall), cannot,
-// and the planner then asks the input itself.
+// The corners tell whether they can vouch for an accepted patch, and why not: flat and alike
+// they can; one turned 60 degrees from the patch cannot, nor one whose faces spread wide (a
+// crease, a thin wall): the planner then asks the input itself, and on a crease the price
+// counts the surface moved.
 TEST(Vetoes, CornersSayWhenTheyCannotVouchForAPatch) {
   RingCase s;
   s.mesh = vrs_test::hexagon_fan();
@@ -62,23 +63,26 @@ TEST(Vetoes, CornersSayWhenTheyCannotVouchForAPatch) {
   Evaluator eval(Mode::Surface3D, {0, 0, 1}, s.mesh.positions.data());
   Patch p = projected(s, 6, {0, 0, 1});
   ASSERT_TRUE(fill_candidate(s.ring, OpenRing::Border, 1, p));
-  auto unsure = [&] {
-    bool u = false;
+  auto doubts = [&] {
+    uint8_t d = 0;
     EXPECT_EQ(
-        veto_shape(s.ring, p, replaced(s, p, eval), s.normals.data(), RemovalLimits{}, false, &u),
+        veto_shape(s.ring, p, replaced(s, p, eval), s.normals.data(), RemovalLimits{}, false, &d),
         RejectCount);
-    return u;
+    return int(d);
   };
-  EXPECT_FALSE(unsure());
+  EXPECT_EQ(doubts(), 0);
   const uint32_t corner = s.ring.v[2];
   float* n = s.normals.data() + 4 * size_t(corner);
   n[0] = 0.866f, n[1] = 0, n[2] = 0.5f; // 60 degrees off, still on the patch's side
-  EXPECT_TRUE(unsure());
+  EXPECT_EQ(doubts(), kCornerTurned);
   n[0] = 0, n[2] = 1;
   n[3] = 0.6f; // its faces spread about 37 degrees
-  EXPECT_TRUE(unsure());
+  EXPECT_EQ(doubts(), kCornerOnCrease);
+  n[0] = 0.866f, n[2] = 0.5f;
+  EXPECT_EQ(doubts(), kCornerTurned | kCornerOnCrease);
+  n[0] = 0, n[2] = 1;
   n[3] = 0.1f;
-  EXPECT_FALSE(unsure());
+  EXPECT_EQ(doubts(), 0);
 }
 
 TEST(Vetoes, TopologyRefusesATriangleThatAlreadyExists) {
