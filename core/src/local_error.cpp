@@ -122,6 +122,28 @@ double triangle_error2(const OldFan& fan, const Ring& ring, const Patch& patch, 
   return worst;
 }
 
+namespace {
+
+// Squared distance from x to the patch's nearest new triangle: triangle `first` (the likeliest),
+// then the others only where their plane is nearer than the best so far.
+double to_patch2(const Patch& patch, Vec3 x, int first = 0) {
+  const auto& q = patch.q;
+  double best = std::numeric_limits<double>::infinity();
+  for (int n = 0; n < patch.count; ++n) {
+    const auto& tri = patch.tri[(first + n) % patch.count];
+    const Vec3 a = q[tri[0]], b = q[tri[1]], d = q[tri[2]];
+    if (n > 0) { // plane distance^2 = dot(x - a, m)^2 / |m|^2
+      const Vec3 m = cross(b - a, d - a);
+      const double h = dot(x - a, m), mm = dot(m, m);
+      if (mm > 0 && h * h >= best * mm) continue;
+    }
+    best = std::min(best, point_triangle_distance2(x, a, b, d));
+  }
+  return best;
+}
+
+} // namespace
+
 double patch_error(uint32_t v, const Ring& ring, const Patch& patch, const Evaluator& eval,
                    double reference_area) {
   const int k = ring.verts;
@@ -146,9 +168,8 @@ double patch_error(uint32_t v, const Ring& ring, const Patch& patch, const Evalu
         worst = std::max(worst, fan.distance2((q[i] + q[j]) * 0.5));
     }
   }
-  // The removed vertex to the new patch: first the triangle it projects into (usually the
-  // nearest), then the others only where their plane is nearer than the best so far.
-  double to_new = patch.count ? std::numeric_limits<double>::infinity() : 0.0;
+  // The removed vertex to the new patch, from the triangle it projects into (usually the
+  // nearest).
   int first = 0;
   for (int t = 0; t < patch.count; ++t) {
     const auto& tri = patch.tri[t];
@@ -158,16 +179,7 @@ double patch_error(uint32_t v, const Ring& ring, const Patch& patch, const Evalu
       break;
     }
   }
-  for (int n = 0; n < patch.count; ++n) {
-    const auto& tri = patch.tri[(first + n) % patch.count];
-    Vec3 a = q[tri[0]], b = q[tri[1]], d = q[tri[2]];
-    if (n > 0) { // plane distance^2 = dot(c - a, m)^2 / |m|^2
-      const Vec3 m = cross(b - a, d - a);
-      const double h = dot(c - a, m), mm = dot(m, m);
-      if (mm > 0 && h * h >= to_new * mm) continue;
-    }
-    to_new = std::min(to_new, point_triangle_distance2(c, a, b, d));
-  }
+  double to_new = patch.count ? to_patch2(patch, c, first) : 0.0;
   // A triangle cut off (no patch): the surface now ends at the edge between the two neighbours.
   if (patch.count == 0 && k == 2) {
     const double d = distance_to_segment(c, q[0], q[1]);
@@ -184,18 +196,7 @@ double patch_error(uint32_t v, const Ring& ring, const Patch& patch, const Evalu
 
 double moved_surface(const OldFan& fan, const Ring& ring, const Patch& patch, Vec3 c) {
   const auto& q = patch.q;
-  auto to_patch = [&](Vec3 x) { // the nearest new triangle, planes first
-    double best = std::numeric_limits<double>::infinity();
-    for (int t = 0; t < patch.count; ++t) {
-      const auto& tri = patch.tri[t];
-      const Vec3 a = q[tri[0]], b = q[tri[1]], d = q[tri[2]];
-      const Vec3 m = cross(b - a, d - a);
-      const double h = dot(x - a, m), mm = dot(m, m);
-      if (mm > 0 && h * h >= best * mm) continue;
-      best = std::min(best, point_triangle_distance2(x, a, b, d));
-    }
-    return std::sqrt(best);
-  };
+  auto to_patch = [&](Vec3 x) { return std::sqrt(to_patch2(patch, x)); };
   double moved = 0;
   for (int i = 0; i < ring.faces; ++i) { // the old face's centroid and a point nearer c
     const Vec3 a = q[i], b = q[(i + 1) % ring.verts];
