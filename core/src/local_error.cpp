@@ -1,6 +1,7 @@
 #include "local_error.h"
 
 #include <algorithm>
+#include <array>
 #include <limits>
 
 namespace vrs {
@@ -156,10 +157,12 @@ double patch_error(uint32_t v, const Ring& ring, const Patch& patch, const Evalu
   const double area = fan.area();
 
   double worst = 0;
+  std::array<double, kMaxRing> centroid2; // the new centroids to the old fan, squared
   for (int t = 0; t < patch.count; ++t) {
     const auto& tri = patch.tri[t];
     Vec3 a = q[tri[0]], b = q[tri[1]], d = q[tri[2]];
-    worst = std::max(worst, fan.distance2((a + b + d) * (1.0 / 3)));
+    centroid2[t] = fan.distance2((a + b + d) * (1.0 / 3));
+    worst = std::max(worst, centroid2[t]);
     for (int e = 0; e < 3; ++e) {
       int i = tri[e], j = tri[(e + 1) % 3];
       // Ring edges are kept as they are; each diagonal is shared by two new triangles:
@@ -191,10 +194,12 @@ double patch_error(uint32_t v, const Ring& ring, const Patch& patch, const Evalu
   // triangle (coarse organic meshes too), mushroom at 1 % lost a fifth of its accuracy and its
   // target (bench/ablation.md).
   if (!(patch.corner_doubts & kCornerOnCrease) || patch.count == 0) return local;
-  return std::max(local, std::sqrt(local * moved_surface(fan, ring, patch, c) / reference_area));
+  const double moved = moved_surface(fan, ring, patch, c, centroid2.data());
+  return std::max(local, std::sqrt(local * moved / reference_area));
 }
 
-double moved_surface(const OldFan& fan, const Ring& ring, const Patch& patch, Vec3 c) {
+double moved_surface(const OldFan& fan, const Ring& ring, const Patch& patch, Vec3 c,
+                     const double* centroid2) {
   const auto& q = patch.q;
   auto to_patch = [&](Vec3 x) { return std::sqrt(to_patch2(patch, x)); };
   double moved = 0;
@@ -206,7 +211,8 @@ double moved_surface(const OldFan& fan, const Ring& ring, const Patch& patch, Ve
   for (int t = 0; t < patch.count; ++t) {
     const auto& tri = patch.tri[t];
     const Vec3 a = q[tri[0]], b = q[tri[1]], d = q[tri[2]];
-    moved += 0.5 * length(cross(b - a, d - a)) * std::sqrt(fan.distance2((a + b + d) * (1.0 / 3)));
+    const double d2 = centroid2 ? centroid2[t] : fan.distance2((a + b + d) * (1.0 / 3));
+    moved += 0.5 * length(cross(b - a, d - a)) * std::sqrt(d2);
   }
   return moved;
 }

@@ -58,7 +58,10 @@ double patch_error(uint32_t v, const Ring& ring, const Patch& patch, const Evalu
 // The surface moved by the patch, two-sided: the area-weighted distance of the old fan to the
 // new patch (two points per old face) plus that of the new patch to the old fan (its
 // triangles' centroids); a distance times an area.
-double moved_surface(const OldFan& fan, const Ring& ring, const Patch& patch, Vec3 c);
+// `centroid2`: the new triangles' centroids' squared distances to the old fan, when the caller
+// has measured them already (patch_error has).
+double moved_surface(const OldFan& fan, const Ring& ring, const Patch& patch, Vec3 c,
+                     const double* centroid2 = nullptr);
 
 // How far v drops onto the planes of the patch's triangles, at most: an O(k) estimate of
 // patch_error's main term, used to rank the ways to fill one hole (same weight for all).
