@@ -21,6 +21,7 @@ class Constraints {
 
   // Number of constrained edges at v (saturates at 255).
   int degree(uint32_t v) const { return degree_.empty() ? 0 : degree_[v]; }
+  bool active() const { return !degree_.empty(); } // built: edges given or a feature angle
   bool has(uint32_t a, uint32_t b) const { return edges_.contains(a, b); }
 
   // For a vertex on exactly two constrained edges: their ring positions (i < j). False when

@@ -30,6 +30,7 @@ class Evaluator {
       : mode_(mode), plane_(plane), pos_(positions), all_triples_(all_triples_valence) {}
 
   Vec3 position(uint32_t v) const { return {pos_[3 * v], pos_[3 * v + 1], pos_[3 * v + 2]}; }
+  void set_positions(const float* positions) { pos_ = positions; } // the array grew (fan_split.h)
 
   // Outline corners: a boundary vertex whose outline turns more than acos(cos) is kept
   // (default kBoundaryCornerCos). -1: none is (the local-error price, and the factor's last

@@ -53,7 +53,7 @@ template <class Queue> void Simplifier::requeue(Queue& queue) {
   Ring ring;
   const uint32_t* tris = mesh_.triangles.data();
   for (uint32_t i = 0; i < mesh_.vertex_count(); ++i) {
-    const uint32_t v = order_.vertex_new[i]; // input order, as run() queues
+    const uint32_t v = queue_order(i); // as run() queues
     if (flags_[v] & (kFlagLocked | kFlagRemoved) || topo_.valence(v) == 0) continue;
     if (!removable(topo_.ring(v, tris, opt_.max_valence, ring))) continue;
     const Priced p = evaluate(v, ring);

@@ -118,6 +118,21 @@ void Simplifier::compact() {
   std::vector<uint8_t> removed(flags_.size());
   for (size_t v = 0; v < flags_.size(); ++v)
     removed[v] = flags_[v] & kFlagRemoved;
+  if (!fans_.empty()) { // a copy that stays is its original again (fan_split.h)
+    const size_t n = order_.vertex_new.size();
+    for (size_t i = 0; i < fans_.original.size(); ++i) {
+      const uint32_t o = fans_.original[i];
+      // Removals counted are input vertices gone: not a copy, nor an original a copy revives.
+      if (removed[n + i])
+        --rep_.removed;
+      else if (removed[o])
+        removed[o] = 0, --rep_.removed;
+    }
+    for (uint32_t& v : mesh_.triangles)
+      if (v != kNone && v >= n) v = fans_.original[v - n];
+    removed.resize(n);
+    mesh_.positions.resize(3 * n);
+  }
   // A welded copy goes where the copy standing for it goes.
   for (size_t i = 0; i < welding_.rep.size(); ++i)
     removed[order_.vertex_new[i]] = removed[order_.vertex_new[welding_.rep[i]]];

@@ -12,7 +12,7 @@
 namespace vrs {
 
 Parts make_parts(const std::vector<uint32_t>& tris, size_t vertex_count, uint32_t size,
-                 uint32_t shift) {
+                 uint32_t shift, const std::vector<uint32_t>& sibling) {
   Parts parts;
   parts.size = size;
   parts.shift = shift;
@@ -28,6 +28,8 @@ Parts make_parts(const std::vector<uint32_t>& tris, size_t vertex_count, uint32_
     const size_t pa = parts.of(a);
     if (parts.of(b) != pa || parts.of(c) != pa) frozen[a] = frozen[b] = frozen[c] = 2;
   }
+  for (size_t v = 0; v < sibling.size(); ++v)
+    if (sibling[v] != kNone) frozen[v] = 2;
   for (size_t i = 0; i + 2 < tris.size(); i += 3) {
     const uint32_t a = tris[i], b = tris[i + 1], c = tris[i + 2];
     if (a == kNone) continue;
@@ -194,7 +196,7 @@ bool Simplifier::run_parts() {
   const size_t needed0 = removals_needed();
   const uint32_t size = uint32_t(opt_.part_vertices);
   for (uint32_t shift : {0u, size / 2}) {
-    Parts parts = make_parts(mesh_.triangles, mesh_.vertex_count(), size, shift);
+    Parts parts = make_parts(mesh_.triangles, mesh_.vertex_count(), size, shift, fans_.sibling);
     if (!run_cut(parts, needed0)) return false;
     price_frozen(parts);
   }

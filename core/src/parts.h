@@ -31,9 +31,11 @@ struct Parts {
   }
 };
 
-// `tris` in the spatial order; dead faces (kNone) are skipped.
+// `tris` in the spatial order; dead faces (kNone) are skipped. Vertices with a `sibling`
+// (fan_split.h; empty: none) stay frozen with their neighbours: an edge test at one reads
+// another's lists, which may lie in another part.
 Parts make_parts(const std::vector<uint32_t>& tris, size_t vertex_count, uint32_t size,
-                 uint32_t shift);
+                 uint32_t shift, const std::vector<uint32_t>& sibling = {});
 
 // A part's own queue: an exact heap over the part's range of vertices, 12 bytes an entry
 // (the whole mesh's hash table spans all vertices: one a part would cost parts x vertices).

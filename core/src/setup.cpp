@@ -12,6 +12,8 @@ namespace vrs {
 
 namespace {
 
+constexpr uint8_t kKeptOnConstraints = 128; // beside a VertexKind in the set-up's kinds
+
 size_t drop_repeated_corner_faces(std::vector<uint32_t>& tris, std::vector<uint32_t>& source) {
   size_t out = 0;
   source.clear();
@@ -84,11 +86,106 @@ void Simplifier::lock_split_seams() {
   auto same = [p](uint32_t a, uint32_t b) {
     return std::equal(p + 3 * size_t(a), p + 3 * size_t(a) + 3, p + 3 * size_t(b));
   };
+  // Copies of one vertex (fan_split.h) are no seam: one vertex of the input.
+  auto copies = [&](uint32_t a, uint32_t b) {
+    if (fans_.empty()) return false;
+    for (uint32_t x = fans_.sibling[a]; x != kNone && x != a; x = fans_.sibling[x])
+      if (x == b) return true;
+    return false;
+  };
   std::sort(border.begin(), border.end(), less);
   for (size_t i = 0; i + 1 < border.size(); ++i)
-    if (same(border[i], border[i + 1]))
+    if (same(border[i], border[i + 1]) && !copies(border[i], border[i + 1]))
       flags_[border[i]] |= kFlagTwin | kFlagLocked,
           flags_[border[i + 1]] |= kFlagTwin | kFlagLocked;
+}
+
+// The set-up that reads the fans, up to every vertex's kind and first price: made again when
+// fans were split apart (the run's numbering then has the copies).
+void Simplifier::first_prices(std::vector<uint8_t>& kinds, std::vector<Priced>& first) {
+  const size_t n = mesh_.vertex_count();
+  const auto& t = mesh_.triangles;
+  // The normal cones and fan areas vertex by vertex on the workers (summed face by face on
+  // one thread, they were a fifth of the run's serial part).
+  normals_.assign(4 * n, 0.0f);
+  if (lazy_) fan_area_.assign(n, 0.0f);
+  workers_.for_each(
+      n,
+      [&](size_t v) {
+        vertex_cone(mesh_.positions.data(), t.data(), topo_, uint32_t(v), &normals_[4 * v],
+                    lazy_ ? &fan_area_[v] : nullptr);
+      },
+      1024);
+  reference_area_ = mean_triangle_area(mesh_.positions.data(), t);
+  planner_ =
+      Planner(eval_, topo_, t.data(), normals_.data(), limits_, Pricer{&estimate, &price, this},
+              opt_.fill == Fill::Best, opt_.mode != Mode::Surface3D);
+  if (opt_.max_error > 0) {
+    face_bound_.assign(t.size() / 3, 0.0f); // the input is its own surface
+    limits_.max_error = opt_.max_error;
+    planner_.set_face_bounds(face_bound_.data());
+  }
+  if (opt_.against_input && opt_.priority == Priority::LocalError) {
+    carried_.init(t.size() / 3, n);
+    planner_.set_carried(&carried_);
+  }
+  jump_floor_ = 1e-3 * bounding_box_diagonal(mesh_);
+  factor_.assign(n, std::numeric_limits<float>::infinity());
+  faces_ = faces0_ = t.size() / 3;
+  const TargetKind tk = opt_.target.kind;
+  target_faces_ = tk == TargetKind::Faces ? opt_.target.faces
+                  : tk == TargetKind::Ratio
+                      ? static_cast<size_t>(std::llround(opt_.target.ratio * faces0_))
+                      : 0;
+  target_vertices_ = tk == TargetKind::Vertices ? opt_.target.vertices : 0;
+  if (!simplify_boundary_ && opt_.simplify_boundary_when_needed &&
+      (simplify_boundary_ = rep_.boundary_simplified = border_needs_simplifying()))
+    lock_split_seams();
+  // Every vertex's kind and first price, on the workers (reads only; each writes its own
+  // slots); the caller counts them in vertex order.
+  kinds.assign(n, 0);
+  first.assign(n, Priced{});
+  workers_.for_each(
+      n,
+      [&](size_t i) {
+        const uint32_t v = static_cast<uint32_t>(i);
+        Ring ring;
+        VertexKind kind = topo_.ring(v, t.data(), opt_.max_valence, ring);
+        kinds[v] = static_cast<uint8_t>(kind);
+        if (kind == VertexKind::Isolated || flags_[v] & kFlagLocked || !removable(kind)) return;
+        std::array<int, 2> seam;
+        if (along(v, ring, seam) == Along::Kept)
+          kinds[v] |= kKeptOnConstraints;
+        else
+          first[v] = evaluate(v, ring);
+      },
+      256);
+}
+
+bool Simplifier::split_fans_apart(const std::vector<uint8_t>& kinds) {
+  // Not with constraints (their edges name the vertices as they were), nor where faces were
+  // reoriented (which faces make a fan then follows the orientation chosen; a fuzzer's mesh
+  // of pieces so turned changed topology), nor a second time.
+  if (constraints_.active() || rep_.reoriented_faces > 0 || !fans_.empty()) return false;
+  std::vector<uint32_t> candidates;
+  for (uint32_t v = 0; v < kinds.size(); ++v)
+    if (kinds[v] == uint8_t(VertexKind::NonManifold) && !(flags_[v] & kFlagLocked))
+      candidates.push_back(v);
+  if (candidates.empty()) return false;
+  fans_ = split_fans(mesh_.triangles, mesh_.vertex_count(), topo_, candidates);
+  if (fans_.empty()) return false;
+  // The copies' positions after the input's (compact() takes them off again).
+  auto& pos = mesh_.positions;
+  pos.reserve(pos.size() + 3 * fans_.original.size());
+  for (uint32_t o : fans_.original)
+    for (int c = 0; c < 3; ++c)
+      pos.push_back(pos[3 * size_t(o) + c]);
+  eval_.set_positions(pos.data());
+  for (uint32_t o : fans_.original)
+    flags_.push_back(flags_[o]);
+  topo_.build(mesh_.triangles, mesh_.vertex_count());
+  topo_.set_siblings(fans_.sibling);
+  return true;
 }
 
 void Simplifier::prepare() {
@@ -173,63 +270,13 @@ void Simplifier::prepare() {
         corner_source_[3 * f + c] =
             3 * face_source_[f] + (reversed.empty() || !reversed[f] || !c ? c : 3 - c);
   }
-  // The normal cones and fan areas vertex by vertex on the workers (summed face by face on
-  // one thread, they were a fifth of the run's serial part).
-  normals_.assign(4 * n, 0.0f);
-  if (lazy_) fan_area_.assign(n, 0.0f);
-  workers_.for_each(
-      n,
-      [&](size_t v) {
-        vertex_cone(mesh_.positions.data(), t.data(), topo_, uint32_t(v), &normals_[4 * v],
-                    lazy_ ? &fan_area_[v] : nullptr);
-      },
-      1024);
-  reference_area_ = mean_triangle_area(mesh_.positions.data(), t);
-  planner_ =
-      Planner(eval_, topo_, t.data(), normals_.data(), limits_, Pricer{&estimate, &price, this},
-              opt_.fill == Fill::Best, opt_.mode != Mode::Surface3D);
-  if (opt_.max_error > 0) {
-    face_bound_.assign(t.size() / 3, 0.0f); // the input is its own surface
-    limits_.max_error = opt_.max_error;
-    planner_.set_face_bounds(face_bound_.data());
-  }
-  if (opt_.against_input && opt_.priority == Priority::LocalError) {
-    carried_.init(t.size() / 3, n);
-    planner_.set_carried(&carried_);
-  }
-  jump_floor_ = 1e-3 * bounding_box_diagonal(mesh_);
-  factor_.assign(n, std::numeric_limits<float>::infinity());
-  faces_ = faces0_ = t.size() / 3;
-  const TargetKind tk = opt_.target.kind;
-  target_faces_ = tk == TargetKind::Faces ? opt_.target.faces
-                  : tk == TargetKind::Ratio
-                      ? static_cast<size_t>(std::llround(opt_.target.ratio * faces0_))
-                      : 0;
-  target_vertices_ = tk == TargetKind::Vertices ? opt_.target.vertices : 0;
-  if (!simplify_boundary_ && opt_.simplify_boundary_when_needed &&
-      (simplify_boundary_ = rep_.boundary_simplified = border_needs_simplifying()))
-    lock_split_seams();
-  // Every vertex's kind and first price, on the workers (reads only; each writes its own
-  // slots), then the counts in vertex order.
-  constexpr uint8_t kKeptOnConstraints = 128; // beside the VertexKind
-  std::vector<uint8_t> kinds(n);
-  std::vector<Priced> first(n);
-  workers_.for_each(
-      n,
-      [&](size_t i) {
-        const uint32_t v = static_cast<uint32_t>(i);
-        Ring ring;
-        VertexKind kind = topo_.ring(v, t.data(), opt_.max_valence, ring);
-        kinds[v] = static_cast<uint8_t>(kind);
-        if (kind == VertexKind::Isolated || flags_[v] & kFlagLocked || !removable(kind)) return;
-        std::array<int, 2> seam;
-        if (along(v, ring, seam) == Along::Kept)
-          kinds[v] |= kKeptOnConstraints;
-        else
-          first[v] = evaluate(v, ring);
-      },
-      256);
-  for (uint32_t v = 0; v < n; ++v) {
+  std::vector<uint8_t> kinds;
+  std::vector<Priced> first;
+  first_prices(kinds, first);
+  // Several fans at one vertex (fan_split.h): a copy a fan, and the set-up made again in the
+  // new numbering (on such meshes only).
+  if (split_fans_apart(kinds)) first_prices(kinds, first);
+  for (uint32_t v = 0; v < kinds.size(); ++v) {
     const VertexKind kind = static_cast<VertexKind>(kinds[v] & ~kKeptOnConstraints);
     switch (kind) {
     case VertexKind::Isolated: ++rep_.unreferenced_vertices; continue;

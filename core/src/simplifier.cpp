@@ -53,7 +53,7 @@ template <class Queue> void Simplifier::run(Queue& queue) {
   // In the input's order, as the paper fills its table: the FIFO of an interval then follows
   // the input, not space, and removals spread over the mesh.
   for (uint32_t i = 0; i < n; ++i) {
-    const uint32_t v = order_.vertex_new[i];
+    const uint32_t v = queue_order(i);
     if (std::isfinite(factor_[v]) && (!by_factor || factor_[v] <= opt_.target.max_factor))
       queue.push(v, factor_[v]);
   }

@@ -13,6 +13,7 @@
 #include "carried_points.h"
 #include "constraints.h"
 #include "evaluation.h"
+#include "fan_split.h"
 #include "parts.h"
 #include "removal.h"
 #include "scheduler.h"
@@ -93,6 +94,10 @@ class Simplifier {
   // evaluate() on v's ring as it is now; +inf when v is no longer removable.
   Priced price_now(uint32_t v) const;
   void note(uint32_t v, const Priced& p);
+  // --- setup.cpp: the set-up from the fans on (normal cones to every vertex's kind and first
+  // price); then, where several fans meet at a vertex, a copy a fan (true: set up again).
+  void first_prices(std::vector<uint8_t>& kinds, std::vector<Priced>& first);
+  bool split_fans_apart(const std::vector<uint8_t>& kinds);
   // Plans v's removal on its evaluated plane, then on a fallback direction; RejectCount = ok,
   // with the chosen patch's local error in `cost`.
   Reject plan(uint32_t v, const Ring& ring, const Evaluation& e, Patch& patch, double& cost,
@@ -201,6 +206,11 @@ class Simplifier {
   Constraints constraints_;
   SpatialOrder order_;
   Welding welding_; // split vertices welded for the run (Options::split_vertices)
+  FanSplit fans_;   // vertices where fans meet, a copy a fan for the run (fan_split.h)
+  // The vertex queued i-th: the input's order, then the copies of fan_split.h.
+  uint32_t queue_order(size_t i) const {
+    return i < order_.vertex_new.size() ? order_.vertex_new[i] : uint32_t(i);
+  }
   // Per input face: turned over for the run only (pieces welded along edges both walked the
   // same way, Welding::same_way); output faces take it back. Empty: the run's orientation is
   // the output's.

@@ -41,7 +41,8 @@ size_t count_duplicate_directed_edges(const vrs::Mesh& m);
 // input's vertex normals at their corners (untouched input faces are the user's business).
 size_t count_flipped_new(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Report& r);
 // Euler characteristic V - E + F of each connected component (over referenced vertices),
-// sorted: removals must leave every component's topology as it was.
+// sorted, fans that touch only at a vertex counted apart (the core simplifies them apart):
+// removals must leave every component's topology as it was.
 std::vector<long> component_euler(const vrs::Mesh& m);
 // Same positions bit for bit (NaN included) and same triangles.
 bool same_bits(const vrs::Mesh& a, const vrs::Mesh& b);
