@@ -35,6 +35,18 @@ int main(int argc, char** argv) {
       {7 | 0x80, 32 | 4, 0x028f5c28u}, // ratio 1 %, in parts, boundary, seams, locks
   };
   int written = 0;
+  // A cracked mesh (bands that touch only at points): its vertices where fans meet are split
+  // for the run (fan_split.h); under every option set.
+  {
+    const vrs::Mesh cracked = vrs_test::cracked_cylinder(5, 3, 8);
+    int k = 0;
+    for (const Variant& v : variants) {
+      auto bytes = vrs_test::encode_fuzz_case(cracked, v.f0, v.f1, 1000, v.param);
+      std::ofstream(out + "/cracked." + std::to_string(k++), std::ios::binary)
+          .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
+      ++written;
+    }
+  }
   for (int i = 2; i < argc; ++i) {
     vrs::Mesh m = vrs_test::read_off(argv[i]);
     if (i == 2) { // the first mesh also with its upper faces on copies of the shared vertices

@@ -2,7 +2,6 @@
 // vertex again on output, and never joined by an edge that would give an edge a third face.
 #include <gtest/gtest.h>
 
-#include <cmath>
 #include <set>
 
 #include "fan_split.h"
@@ -13,41 +12,6 @@
 using namespace vrs;
 
 namespace {
-
-// A cylinder of `bands` bands of `rows` rows of quads, alternately 2n and n columns around:
-// where a coarse band meets a fine one the two share every other vertex of the fine band's
-// edge row and no edge, a crack whose shared vertices are each two open fans (CGAL's pig.stl
-// has 421 of them).
-Mesh cracked_cylinder(int bands, int rows, int n) {
-  Mesh m;
-  const float h = 0.25f, pi = 3.14159265f;
-  auto add = [&](int k, int of, float y) {
-    const float a = 2 * pi * float(k) / float(of);
-    m.positions.insert(m.positions.end(), {std::cos(a), y, std::sin(a)});
-    return uint32_t(m.vertex_count() - 1);
-  };
-  std::vector<std::vector<uint32_t>> edge_rows(size_t(bands) + 1);
-  for (int b = 0; b <= bands; ++b)
-    for (int k = 0; k < 2 * n; ++k)
-      edge_rows[size_t(b)].push_back(add(k, 2 * n, float(b * rows) * h));
-  for (int b = 0; b < bands; ++b) {
-    const int cols = b % 2 ? n : 2 * n, step = 2 * n / cols;
-    std::vector<std::vector<uint32_t>> row(size_t(rows) + 1);
-    for (int r = 0; r <= rows; ++r)
-      for (int k = 0; k < cols; ++k)
-        row[size_t(r)].push_back(r == 0      ? edge_rows[size_t(b)][size_t(k * step)]
-                                 : r == rows ? edge_rows[size_t(b) + 1][size_t(k * step)]
-                                             : add(k, cols, float(b * rows + r) * h));
-    for (int r = 0; r < rows; ++r)
-      for (int k = 0; k < cols; ++k) {
-        const uint32_t a = row[size_t(r)][size_t(k)], c = row[size_t(r)][size_t((k + 1) % cols)],
-                       d = row[size_t(r) + 1][size_t(k)],
-                       e = row[size_t(r) + 1][size_t((k + 1) % cols)];
-        m.triangles.insert(m.triangles.end(), {a, d, c, c, d, e});
-      }
-  }
-  return m;
-}
 
 size_t kind_count(const Mesh& m, VertexKind kind) {
   Topology t;
@@ -118,7 +82,7 @@ TEST(FanSplit, AnEdgeOfThreeFacesOrFacesWalkingAnEdgeAlikeStayAsTheyAre) {
 }
 
 TEST(FanSplit, ACrackedMeshSimplifiesThroughItsCracksAndEachVertexComesOutOnce) {
-  const Mesh in = cracked_cylinder(5, 4, 16);
+  const Mesh in = vrs_test::cracked_cylinder(5, 4, 16);
   ASSERT_EQ(kind_count(in, VertexKind::NonManifold), 4u * 16u); // every other crack vertex
   for (double r : {0.1, 0.05}) { // five open tubes: 30 faces at least
     const Options o = ratio(r);
@@ -158,7 +122,7 @@ TEST(FanSplit, ACrackedMeshSimplifiesThroughItsCracksAndEachVertexComesOutOnce) 
 TEST(FanSplit, AVertexBothOfWhoseFansKeepItIsOneVertexWithBoth) {
   // Lightly simplified, most crack vertices stay in both bands: one output vertex each,
   // its faces on both sides.
-  const Mesh in = cracked_cylinder(5, 4, 16);
+  const Mesh in = vrs_test::cracked_cylinder(5, 4, 16);
   Mesh m = in;
   const Options o = ratio(0.9);
   const Report rep = simplify(m, o);

@@ -235,4 +235,35 @@ vrs::Mesh plate_with_holes(int nx, int ny, const std::vector<std::pair<int, int>
   return m;
 }
 
+vrs::Mesh cracked_cylinder(int bands, int rows, int n) {
+  vrs::Mesh m;
+  const float h = 0.25f, pi = 3.14159265f;
+  auto add = [&](int k, int of, float y) {
+    const float a = 2 * pi * float(k) / float(of);
+    m.positions.insert(m.positions.end(), {std::cos(a), y, std::sin(a)});
+    return uint32_t(m.vertex_count() - 1);
+  };
+  std::vector<std::vector<uint32_t>> edge_rows(size_t(bands) + 1);
+  for (int b = 0; b <= bands; ++b)
+    for (int k = 0; k < 2 * n; ++k)
+      edge_rows[size_t(b)].push_back(add(k, 2 * n, float(b * rows) * h));
+  for (int b = 0; b < bands; ++b) {
+    const int cols = b % 2 ? n : 2 * n, step = 2 * n / cols;
+    std::vector<std::vector<uint32_t>> row(size_t(rows) + 1);
+    for (int r = 0; r <= rows; ++r)
+      for (int k = 0; k < cols; ++k)
+        row[size_t(r)].push_back(r == 0      ? edge_rows[size_t(b)][size_t(k * step)]
+                                 : r == rows ? edge_rows[size_t(b) + 1][size_t(k * step)]
+                                             : add(k, cols, float(b * rows + r) * h));
+    for (int r = 0; r < rows; ++r)
+      for (int k = 0; k < cols; ++k) {
+        const uint32_t a = row[size_t(r)][size_t(k)], c = row[size_t(r)][size_t((k + 1) % cols)],
+                       d = row[size_t(r) + 1][size_t(k)],
+                       e = row[size_t(r) + 1][size_t((k + 1) % cols)];
+        m.triangles.insert(m.triangles.end(), {a, d, c, c, d, e});
+      }
+  }
+  return m;
+}
+
 } // namespace vrs_test

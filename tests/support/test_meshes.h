@@ -41,4 +41,10 @@ std::vector<NamedMesh> comparison_meshes();
 vrs::Mesh plate_with_holes(int nx, int ny, const std::vector<std::pair<int, int>>& holes,
                            float thickness, int wall_rows = 1);
 
+// A cylinder of `bands` bands of `rows` rows of quads, alternately 2n and n columns around:
+// where a coarse band meets a fine one the two share every other vertex of the fine band's
+// edge row and no edge, a crack whose shared vertices are each two open fans (CGAL's pig.stl
+// has 421 of them).
+vrs::Mesh cracked_cylinder(int bands, int rows, int n);
+
 } // namespace vrs_test
