@@ -10,7 +10,7 @@ FanSplit split_fans(std::vector<uint32_t>& tris, size_t n, const Topology& topo,
   std::vector<int> fan;
   for (uint32_t v : candidates) {
     const uint32_t m = topo.valence(v);
-    if (m < 2) continue;
+    if (m < 2 || m > 4 * uint32_t(kMaxRing)) continue; // a hub stays whole (pairs: quadratic)
     faces.assign(topo.faces_of(v), topo.faces_of(v) + m);
     from.resize(m), to.resize(m);
     for (uint32_t i = 0; i < m; ++i) { // face (v, a, b): the directed ring edge a -> b

@@ -21,12 +21,13 @@ struct FanSplit {
   bool empty() const { return original.empty(); }
 };
 
-// For each of `candidates` (ascending: vertices the ring walk found non-manifold) whose faces
-// form k > 1 fans, each a chain or a cycle of faces that share edges at v: the faces of fans
-// 2..k renamed to k - 1 new vertices n, n + 1, ... (`topo`: the lists of `tris` as given; it
-// is not updated). A candidate with an edge of more than two faces, or two faces walking one
-// edge the same way, stays as it is (kept). Fans of one vertex never share a neighbour (they
-// would share that edge, and be one fan), which Topology::has_edge keeps true (siblings).
+// For each of `candidates` (ascending: vertices the ring walk kept, non-manifold or of high
+// valence; those of more than 4 kMaxRing faces are left whole) whose faces form k > 1 fans,
+// each a chain or a cycle of faces that share edges at v: the faces of fans 2..k renamed to
+// k - 1 new vertices n, n + 1, ... (`topo`: the lists of `tris` as given; it is not updated). A
+// candidate with an edge of more than two faces, or two faces walking one edge the same way, stays
+// as it is (kept). Fans of one vertex never share a neighbour (they would share that edge, and be
+// one fan), which Topology::has_edge keeps true (siblings).
 FanSplit split_fans(std::vector<uint32_t>& tris, size_t n, const Topology& topo,
                     const std::vector<uint32_t>& candidates);
 

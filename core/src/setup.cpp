@@ -169,7 +169,9 @@ bool Simplifier::split_fans_apart(const std::vector<uint8_t>& kinds) {
   if (constraints_.active() || rep_.reoriented_faces > 0 || !fans_.empty()) return false;
   std::vector<uint32_t> candidates;
   for (uint32_t v = 0; v < kinds.size(); ++v)
-    if (kinds[v] == uint8_t(VertexKind::NonManifold) && !(flags_[v] & kFlagLocked))
+    if ((kinds[v] == uint8_t(VertexKind::NonManifold) ||
+         kinds[v] == uint8_t(VertexKind::HighValence)) && // its fans may each be small
+        !(flags_[v] & kFlagLocked))
       candidates.push_back(v);
   if (candidates.empty()) return false;
   fans_ = split_fans(mesh_.triangles, mesh_.vertex_count(), topo_, candidates);

@@ -2,6 +2,7 @@
 // vertex again on output, and never joined by an edge that would give an edge a third face.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <set>
 
 #include "fan_split.h"
@@ -135,4 +136,36 @@ TEST(FanSplit, AVertexBothOfWhoseFansKeepItIsOneVertexWithBoth) {
   EXPECT_TRUE(rep.boundary_simplified);
   EXPECT_LT(rep.kept_boundary, 64u);
   EXPECT_EQ(m.vertex_count() + rep.removed, in.vertex_count());
+}
+
+TEST(FanSplit, TwoConesOnOneApexPastTheValenceCapAreSplitToo) {
+  // Each cone's apex has 20 faces, the shared one 40 (past max_valence 32): kept whole before,
+  // a copy a cone now, each of 20.
+  Mesh m;
+  m.positions = {0, 0, 0};
+  const int n = 20;
+  for (int side : {1, -1}) {
+    const uint32_t first = uint32_t(m.vertex_count());
+    for (int i = 0; i < n; ++i) {
+      const float a = 2 * 3.14159265f * float(i) / float(n);
+      m.positions.insert(m.positions.end(), {std::cos(a), std::sin(a), float(side)});
+    }
+    m.positions.insert(m.positions.end(), {0, 0, 1.2f * float(side)}); // the base's centre
+    const uint32_t centre = uint32_t(m.vertex_count() - 1);
+    for (int i = 0; i < n; ++i) {
+      const uint32_t a = first + uint32_t(i), b = first + uint32_t((i + 1) % n);
+      if (side > 0)
+        m.triangles.insert(m.triangles.end(), {0, b, a, centre, a, b});
+      else
+        m.triangles.insert(m.triangles.end(), {0, a, b, centre, b, a});
+    }
+  }
+  const Options o = ratio(0.5);
+  Mesh out = m;
+  const Report rep = simplify(out, o);
+  ASSERT_EQ(vrs_test::check_run(m, out, o, rep), "");
+  EXPECT_EQ(rep.kept_high_valence, 0u);
+  EXPECT_EQ(rep.kept_nonmanifold, 0u);
+  EXPECT_TRUE(rep.target_reached) << rep.stop_detail;
+  EXPECT_EQ(vrs_test::edge_stats(out).nonmanifold, 0u);
 }
