@@ -3,6 +3,7 @@
 //   vrs_fuzz_seeds OUT_DIR MESH.off...
 #include <cstdio>
 #include <fstream>
+#include <iterator>
 #include <string>
 #include <vector>
 
@@ -35,18 +36,20 @@ int main(int argc, char** argv) {
       {7 | 0x80, 32 | 4, 0x028f5c28u}, // ratio 1 %, in parts, boundary, seams, locks
   };
   int written = 0;
-  // A cracked mesh (bands that touch only at points): its vertices where fans meet are split
-  // for the run (fan_split.h); under every option set.
-  {
-    const vrs::Mesh cracked = vrs_test::cracked_cylinder(5, 3, 8);
+  // `m` under each option set, as NAME.0, NAME.1, ...
+  auto write = [&](const vrs::Mesh& m, const std::string& name, const Variant* begin,
+                   const Variant* end) {
     int k = 0;
-    for (const Variant& v : variants) {
-      auto bytes = vrs_test::encode_fuzz_case(cracked, v.f0, v.f1, 1000, v.param);
-      std::ofstream(out + "/cracked." + std::to_string(k++), std::ios::binary)
+    for (const Variant* v = begin; v != end; ++v) {
+      auto bytes = vrs_test::encode_fuzz_case(m, v->f0, v->f1, 1000, v->param);
+      std::ofstream(out + "/" + name + "." + std::to_string(k++), std::ios::binary)
           .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
       ++written;
     }
-  }
+  };
+  // A cracked mesh (bands that touch only at points): its vertices where fans meet are split
+  // for the run (fan_split.h); under every option set.
+  write(vrs_test::cracked_cylinder(5, 3, 8), "cracked", std::begin(variants), std::end(variants));
   for (int i = 2; i < argc; ++i) {
     vrs::Mesh m = vrs_test::read_off(argv[i]);
     if (i == 2) { // the first mesh also with its upper faces on copies of the shared vertices
@@ -78,13 +81,7 @@ int main(int argc, char** argv) {
       const Variant split_variants[] = {{2, 0, 0x19999999u},
                                         {2 | (3 << 3), 0, 0x19999999u},
                                         {2 | 0x80 | (3 << 3), 4, 0x028f5c28u}};
-      int k = 0;
-      for (const Variant& v : split_variants) {
-        auto bytes = vrs_test::encode_fuzz_case(split, v.f0, v.f1, 1000, v.param);
-        std::ofstream(out + "/split." + std::to_string(k++), std::ios::binary)
-            .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
-        ++written;
-      }
+      write(split, "split", std::begin(split_variants), std::end(split_variants));
     }
     if (m.vertex_count() == 0 || m.vertex_count() > 65535) {
       std::fprintf(stderr, "skipped %s\n", argv[i]);
@@ -92,13 +89,7 @@ int main(int argc, char** argv) {
     }
     std::string base = argv[i];
     base = base.substr(base.find_last_of('/') + 1);
-    int k = 0;
-    for (const Variant& v : variants) {
-      auto bytes = vrs_test::encode_fuzz_case(m, v.f0, v.f1, 1000, v.param);
-      std::ofstream(out + "/" + base + "." + std::to_string(k++), std::ios::binary)
-          .write(reinterpret_cast<const char*>(bytes.data()), std::streamsize(bytes.size()));
-      ++written;
-    }
+    write(m, base, std::begin(variants), std::end(variants));
   }
   std::printf("%d seeds in %s\n", written, out.c_str());
   return written > 0 ? 0 : 1;
