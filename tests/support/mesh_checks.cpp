@@ -118,59 +118,84 @@ std::string boundary_kept(const EdgeCounts& before, const EdgeCounts& after, con
   return {};
 }
 
-// Fans that touch only at a vertex counted apart: each fan past the first (faces around v
-// joined across edges of exactly two faces) given its own copy of v, where no edge at v has
-// more than two faces and v's faces agree on their orientation. The core simplifies such fans
-// apart (fan_split.h), so the topology it keeps is this one's.
-vrs::Mesh unpinched(const vrs::Mesh& m) {
-  const EdgeCounts edges = edge_counts(m);
-  std::vector<std::vector<uint32_t>> faces_at(m.vertex_count());
+// The faces around v grouped into fans (joined across edges of exactly two faces): group[i]
+// is the root of v's i-th face in `faces_at[v]`. False where no split is asked: an edge at v of
+// more than two faces, or v's faces disagreeing on their orientation (walking an edge alike).
+bool fans_at(const vrs::Mesh& m, const EdgeCounts& edges,
+             const std::vector<std::vector<uint32_t>>& faces_at, uint32_t v,
+             std::vector<size_t>& group) {
+  const auto& fs = faces_at[v];
+  group.resize(fs.size());
+  for (size_t i = 0; i < fs.size(); ++i)
+    group[i] = i;
+  auto root = [&](size_t i) {
+    while (group[i] != i)
+      i = group[i];
+    return i;
+  };
+  std::set<uint32_t> after, before;
+  for (uint32_t f : fs) {
+    const uint32_t* t = &m.triangles[3 * size_t(f)];
+    const int c = t[0] == v ? 0 : t[1] == v ? 1 : 2;
+    if (!after.insert(t[(c + 1) % 3]).second || !before.insert(t[(c + 2) % 3]).second) return false;
+  }
+  for (size_t i = 0; i < fs.size(); ++i)
+    for (int c = 0; c < 3; ++c) {
+      const uint32_t a = m.triangles[3 * fs[i] + c];
+      if (a == v) continue;
+      const int holders = edges.at(key(v, a));
+      if (holders > 2) return false;
+      if (holders != 2) continue;
+      for (size_t j = i + 1; j < fs.size(); ++j)
+        for (int d = 0; d < 3; ++d)
+          if (m.triangles[3 * fs[j] + d] == a) group[root(j)] = root(i);
+    }
+  for (size_t i = 0; i < fs.size(); ++i)
+    group[i] = root(i);
+  return true;
+}
+
+std::vector<std::vector<uint32_t>> faces_at(const vrs::Mesh& m) {
+  std::vector<std::vector<uint32_t>> at(m.vertex_count());
   for (size_t f = 0; f < m.face_count(); ++f)
     for (int c = 0; c < 3; ++c)
-      faces_at[m.triangles[3 * f + c]].push_back(uint32_t(f));
+      at[m.triangles[3 * f + c]].push_back(uint32_t(f));
+  return at;
+}
+
+// Per vertex: 1 where several fans only touch (fans_at agrees to split it).
+std::vector<uint8_t> pinches(const vrs::Mesh& m) {
+  const EdgeCounts edges = edge_counts(m);
+  const auto at = faces_at(m);
+  std::vector<uint8_t> pinched(m.vertex_count(), 0);
+  std::vector<size_t> group;
+  for (uint32_t v = 0; v < m.vertex_count(); ++v)
+    if (fans_at(m, edges, at, v, group))
+      pinched[v] = std::set<size_t>(group.begin(), group.end()).size() > 1;
+  return pinched;
+}
+
+// Fans that touch only at a vertex counted apart, at the vertices flagged in `at_pinch`: each
+// fan past the first given its own copy of the vertex. The core simplifies such fans apart
+// (fan_split.h), so the topology it keeps is this one's.
+vrs::Mesh unpinched(const vrs::Mesh& m, const std::vector<uint8_t>& at_pinch) {
+  const EdgeCounts edges = edge_counts(m);
+  const auto at = faces_at(m);
   vrs::Mesh out = m;
+  std::vector<size_t> group;
   for (uint32_t v = 0; v < m.vertex_count(); ++v) {
-    const auto& fs = faces_at[v];
-    std::vector<size_t> group(fs.size());
-    for (size_t i = 0; i < fs.size(); ++i)
-      group[i] = i;
-    auto root = [&](size_t i) {
-      while (group[i] != i)
-        i = group[i];
-      return i;
-    };
-    // Faces walking an edge at v the same way (orientations that disagree): left whole.
-    std::set<uint32_t> after, before;
-    bool simple = true;
-    for (uint32_t f : fs) {
-      const uint32_t* t = &m.triangles[3 * size_t(f)];
-      const int c = t[0] == v ? 0 : t[1] == v ? 1 : 2;
-      simple =
-          simple && after.insert(t[(c + 1) % 3]).second && before.insert(t[(c + 2) % 3]).second;
-    }
-    for (size_t i = 0; i < fs.size() && simple; ++i)
-      for (int c = 0; c < 3; ++c) {
-        const uint32_t a = m.triangles[3 * fs[i] + c];
-        if (a == v) continue;
-        const int holders = edges.at(key(v, a));
-        simple = simple && holders <= 2;
-        if (holders != 2) continue;
-        for (size_t j = i + 1; j < fs.size(); ++j)
-          for (int d = 0; d < 3; ++d)
-            if (m.triangles[3 * fs[j] + d] == a) group[root(j)] = root(i);
-      }
-    if (!simple) continue;
+    if (!at_pinch[v] || !fans_at(m, edges, at, v, group)) continue;
     std::map<size_t, uint32_t> copy_of; // group root -> the vertex its faces name
-    for (size_t i = 0; i < fs.size(); ++i) {
-      const size_t g = root(i);
-      if (copy_of.empty()) copy_of[g] = v;
-      if (!copy_of.count(g)) {
-        copy_of[g] = uint32_t(out.vertex_count());
+    for (size_t i = 0; i < group.size(); ++i) {
+      if (copy_of.empty()) copy_of[group[i]] = v;
+      if (!copy_of.count(group[i])) {
+        copy_of[group[i]] = uint32_t(out.vertex_count());
         for (int c = 0; c < 3; ++c)
           out.positions.push_back(m.positions[3 * v + c]);
       }
+      uint32_t* t = &out.triangles[3 * size_t(at[v][i])];
       for (int c = 0; c < 3; ++c)
-        if (out.triangles[3 * fs[i] + c] == v) out.triangles[3 * fs[i] + c] = copy_of[g];
+        if (t[c] == v) t[c] = copy_of[group[i]];
     }
   }
   return out;
@@ -307,8 +332,18 @@ size_t count_flipped_new(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::R
 }
 
 std::vector<long> component_euler(const vrs::Mesh& m) {
-  const vrs::Mesh apart = unpinched(m);
+  const vrs::Mesh apart = unpinched(m, pinches(m));
   return euler_of(apart, edge_counts(apart));
+}
+
+bool same_component_euler(const vrs::Mesh& in, const vrs::Mesh& out,
+                          const std::vector<uint32_t>& remap) {
+  const std::vector<uint8_t> at_in = pinches(in);
+  std::vector<uint8_t> at_out(out.vertex_count(), 0);
+  for (size_t v = 0; v < at_in.size() && v < remap.size(); ++v)
+    if (at_in[v] && remap[v] != vrs::kRemoved && remap[v] < at_out.size()) at_out[remap[v]] = 1;
+  const vrs::Mesh a = unpinched(in, at_in), b = unpinched(out, at_out);
+  return euler_of(a, edge_counts(a)) == euler_of(b, edge_counts(b));
 }
 
 size_t orient_coherently(vrs::Mesh& m) {
@@ -547,7 +582,7 @@ std::string check_run(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Opti
   // (fan_split.h): where it did not (faces whose orientations disagree there, constraints),
   // the topology as given is what it keeps.
   if (euler_of(*dst, out_edges) != euler_of(clean, clean_edges) &&
-      component_euler(*dst) != component_euler(clean))
+      !same_component_euler(clean, *dst, rr->remap))
     return "a component's Euler characteristic changed";
   e = check_corner_sources(in, out, o, r);
   if (!e.empty()) return e;

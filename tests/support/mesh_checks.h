@@ -44,6 +44,10 @@ size_t count_flipped_new(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::R
 // sorted, fans that touch only at a vertex counted apart (the core simplifies them apart):
 // removals must leave every component's topology as it was.
 std::vector<long> component_euler(const vrs::Mesh& m);
+// The same for a run's input and output, fans apart only where they are apart in the input
+// (a vertex whose edge of three faces a removal took away is not split in the output either).
+bool same_component_euler(const vrs::Mesh& in, const vrs::Mesh& out,
+                          const std::vector<uint32_t>& remap);
 // Same positions bit for bit (NaN included) and same triangles.
 bool same_bits(const vrs::Mesh& a, const vrs::Mesh& b);
 // Edges by their two end positions (lower first), counted over the faces: a surface closed by
