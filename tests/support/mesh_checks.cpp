@@ -20,102 +20,14 @@ uint64_t key(uint32_t a, uint32_t b) {
   return (uint64_t(a) << 32) | b;
 }
 
-std::unordered_map<uint64_t, int> edge_counts(const vrs::Mesh& m) {
+using EdgeCounts = std::unordered_map<uint64_t, int>;
+
+EdgeCounts edge_counts(const vrs::Mesh& m) {
   std::unordered_map<uint64_t, int> c;
   for (size_t i = 0; i < m.triangles.size(); i += 3)
     for (int e = 0; e < 3; ++e)
       ++c[key(m.triangles[i + e], m.triangles[i + (e + 1) % 3])];
   return c;
-}
-
-struct V3 {
-  double x, y, z;
-};
-V3 pos(const vrs::Mesh& m, uint32_t v) {
-  return {m.positions[3 * v], m.positions[3 * v + 1], m.positions[3 * v + 2]};
-}
-V3 sub(V3 a, V3 b) {
-  return {a.x - b.x, a.y - b.y, a.z - b.z};
-}
-V3 cross(V3 a, V3 b) {
-  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
-}
-double dot(V3 a, V3 b) {
-  return a.x * b.x + a.y * b.y + a.z * b.z;
-}
-
-// Output faces (all, or only those the re-triangulation made) whose normal opposes the input's
-// vertex normals at their corners: dot < -tolerance * |face normal| * |normal sum|.
-size_t flipped_faces(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Report& r, bool new_only,
-                     double tolerance) {
-  // Unit face normals summed, as the core's vertex normals.
-  std::vector<V3> normal(in.vertex_count(), V3{0, 0, 0});
-  for (size_t i = 0; i < in.triangles.size(); i += 3) {
-    V3 x = cross(sub(pos(in, in.triangles[i + 1]), pos(in, in.triangles[i])),
-                 sub(pos(in, in.triangles[i + 2]), pos(in, in.triangles[i])));
-    double l = std::sqrt(dot(x, x));
-    if (!(l > 0) || !std::isfinite(l)) continue;
-    for (int c = 0; c < 3; ++c) {
-      V3& n = normal[in.triangles[i + c]];
-      n = {n.x + x.x / l, n.y + x.y / l, n.z + x.z / l};
-    }
-  }
-  std::vector<uint32_t> old_of(out.vertex_count());
-  for (size_t v = 0; v < r.remap.size(); ++v)
-    if (r.remap[v] != vrs::kRemoved) old_of[r.remap[v]] = uint32_t(v);
-  size_t flipped = 0;
-  for (size_t f = 0; f < out.face_count(); ++f) {
-    if (new_only && r.face_source[f] != vrs::kRemoved) continue;
-    const uint32_t* t = &out.triangles[3 * f];
-    V3 x = cross(sub(pos(out, t[1]), pos(out, t[0])), sub(pos(out, t[2]), pos(out, t[0])));
-    V3 s{0, 0, 0};
-    for (int c = 0; c < 3; ++c) {
-      V3 n = normal[old_of[t[c]]];
-      double l = std::sqrt(dot(n, n));
-      // As the core: a sum this short is faces cancelling, no normal.
-      if (l > 1e-3) s = {s.x + n.x / l, s.y + n.y / l, s.z + n.z / l};
-    }
-    flipped += dot(x, s) < -tolerance * std::sqrt(dot(x, x)) * std::sqrt(dot(s, s));
-  }
-  return flipped;
-}
-
-} // namespace
-
-long EdgeStats::euler() const {
-  return long(referenced_vertices) - long(edges) + long(faces);
-}
-
-namespace {
-
-using EdgeCounts = std::unordered_map<uint64_t, int>;
-
-// The checks below from edge maps built once: check_run reads each mesh's map several times
-// (a 19 M-face mesh's map takes seconds to build and gigabytes to hold).
-EdgeStats stats_of(const vrs::Mesh& m, const EdgeCounts& edges) {
-  EdgeStats s;
-  for (auto& [k, n] : edges) {
-    ++s.edges;
-    s.boundary += n == 1;
-    s.nonmanifold += n > 2;
-  }
-  std::vector<char> used(m.vertex_count(), 0);
-  for (uint32_t v : m.triangles)
-    used[v] = 1;
-  s.referenced_vertices = size_t(std::count(used.begin(), used.end(), 1));
-  s.faces = m.face_count();
-  return s;
-}
-
-std::string boundary_kept(const EdgeCounts& before, const EdgeCounts& after, const vrs::Report& r) {
-  for (auto& [k, n] : before) {
-    if (n != 1) continue;
-    uint32_t a = r.remap[k >> 32], b = r.remap[k & 0xffffffffu];
-    if (a == vrs::kRemoved || b == vrs::kRemoved) return "a boundary vertex was removed";
-    auto it = after.find(key(a, b));
-    if (it == after.end() || it->second != 1) return "a boundary edge was lost";
-  }
-  return {};
 }
 
 // The faces around v grouped into fans (joined across edges of exactly two faces): group[i]
@@ -199,6 +111,99 @@ vrs::Mesh unpinched(const vrs::Mesh& m, const std::vector<uint8_t>& at_pinch) {
     }
   }
   return out;
+}
+
+struct V3 {
+  double x, y, z;
+};
+V3 pos(const vrs::Mesh& m, uint32_t v) {
+  return {m.positions[3 * v], m.positions[3 * v + 1], m.positions[3 * v + 2]};
+}
+V3 sub(V3 a, V3 b) {
+  return {a.x - b.x, a.y - b.y, a.z - b.z};
+}
+V3 cross(V3 a, V3 b) {
+  return {a.y * b.z - a.z * b.y, a.z * b.x - a.x * b.z, a.x * b.y - a.y * b.x};
+}
+double dot(V3 a, V3 b) {
+  return a.x * b.x + a.y * b.y + a.z * b.z;
+}
+
+// Output faces (all, or only those the re-triangulation made) whose normal opposes the input's
+// vertex normals at their corners: dot < -tolerance * |face normal| * |normal sum|.
+size_t flipped_faces(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Report& r, bool new_only,
+                     double tolerance) {
+  // Unit face normals summed, as the core's vertex normals.
+  std::vector<V3> normal(in.vertex_count(), V3{0, 0, 0});
+  for (size_t i = 0; i < in.triangles.size(); i += 3) {
+    V3 x = cross(sub(pos(in, in.triangles[i + 1]), pos(in, in.triangles[i])),
+                 sub(pos(in, in.triangles[i + 2]), pos(in, in.triangles[i])));
+    double l = std::sqrt(dot(x, x));
+    if (!(l > 0) || !std::isfinite(l)) continue;
+    for (int c = 0; c < 3; ++c) {
+      V3& n = normal[in.triangles[i + c]];
+      n = {n.x + x.x / l, n.y + x.y / l, n.z + x.z / l};
+    }
+  }
+  // Where fans only touch, each is a surface of its own (the core judges each by its own
+  // normal, fan_split.h): no one normal there, as where faces cancel.
+  const std::vector<uint8_t> pinched = pinches(in);
+  for (size_t v = 0; v < pinched.size(); ++v)
+    if (pinched[v]) normal[v] = V3{0, 0, 0};
+  std::vector<uint32_t> old_of(out.vertex_count());
+  for (size_t v = 0; v < r.remap.size(); ++v)
+    if (r.remap[v] != vrs::kRemoved) old_of[r.remap[v]] = uint32_t(v);
+  size_t flipped = 0;
+  for (size_t f = 0; f < out.face_count(); ++f) {
+    if (new_only && r.face_source[f] != vrs::kRemoved) continue;
+    const uint32_t* t = &out.triangles[3 * f];
+    V3 x = cross(sub(pos(out, t[1]), pos(out, t[0])), sub(pos(out, t[2]), pos(out, t[0])));
+    V3 s{0, 0, 0};
+    for (int c = 0; c < 3; ++c) {
+      V3 n = normal[old_of[t[c]]];
+      double l = std::sqrt(dot(n, n));
+      // As the core: a sum this short is faces cancelling, no normal.
+      if (l > 1e-3) s = {s.x + n.x / l, s.y + n.y / l, s.z + n.z / l};
+    }
+    flipped += dot(x, s) < -tolerance * std::sqrt(dot(x, x)) * std::sqrt(dot(s, s));
+  }
+  return flipped;
+}
+
+} // namespace
+
+long EdgeStats::euler() const {
+  return long(referenced_vertices) - long(edges) + long(faces);
+}
+
+namespace {
+
+// The checks below from edge maps built once: check_run reads each mesh's map several times
+// (a 19 M-face mesh's map takes seconds to build and gigabytes to hold).
+EdgeStats stats_of(const vrs::Mesh& m, const EdgeCounts& edges) {
+  EdgeStats s;
+  for (auto& [k, n] : edges) {
+    ++s.edges;
+    s.boundary += n == 1;
+    s.nonmanifold += n > 2;
+  }
+  std::vector<char> used(m.vertex_count(), 0);
+  for (uint32_t v : m.triangles)
+    used[v] = 1;
+  s.referenced_vertices = size_t(std::count(used.begin(), used.end(), 1));
+  s.faces = m.face_count();
+  return s;
+}
+
+std::string boundary_kept(const EdgeCounts& before, const EdgeCounts& after, const vrs::Report& r) {
+  for (auto& [k, n] : before) {
+    if (n != 1) continue;
+    uint32_t a = r.remap[k >> 32], b = r.remap[k & 0xffffffffu];
+    if (a == vrs::kRemoved || b == vrs::kRemoved) return "a boundary vertex was removed";
+    auto it = after.find(key(a, b));
+    if (it == after.end() || it->second != 1) return "a boundary edge was lost";
+  }
+  return {};
 }
 
 std::vector<long> euler_of(const vrs::Mesh& m, const EdgeCounts& edges) {
