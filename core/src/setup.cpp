@@ -86,16 +86,10 @@ void Simplifier::lock_split_seams() {
   auto same = [p](uint32_t a, uint32_t b) {
     return std::equal(p + 3 * size_t(a), p + 3 * size_t(a) + 3, p + 3 * size_t(b));
   };
-  // Copies of one vertex (fan_split.h) are no seam: one vertex of the input.
-  auto copies = [&](uint32_t a, uint32_t b) {
-    if (fans_.empty()) return false;
-    for (uint32_t x = fans_.sibling[a]; x != kNone && x != a; x = fans_.sibling[x])
-      if (x == b) return true;
-    return false;
-  };
   std::sort(border.begin(), border.end(), less);
+  // Copies of one vertex (fan_split.h) are no seam: one vertex of the input.
   for (size_t i = 0; i + 1 < border.size(); ++i)
-    if (same(border[i], border[i + 1]) && !copies(border[i], border[i + 1]))
+    if (same(border[i], border[i + 1]) && !topo_.same_vertex(border[i], border[i + 1]))
       flags_[border[i]] |= kFlagTwin | kFlagLocked,
           flags_[border[i + 1]] |= kFlagTwin | kFlagLocked;
 }
@@ -186,7 +180,7 @@ bool Simplifier::split_fans_apart(const std::vector<uint8_t>& kinds) {
   for (uint32_t o : fans_.original)
     flags_.push_back(flags_[o]);
   topo_.build(mesh_.triangles, mesh_.vertex_count());
-  topo_.set_siblings(fans_.sibling);
+  topo_.set_siblings(&fans_.sibling);
   return true;
 }
 

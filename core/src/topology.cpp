@@ -5,7 +5,7 @@
 namespace vrs {
 
 void Topology::build(const std::vector<uint32_t>& triangles, size_t vertex_count) {
-  sibling_.clear();
+  sibling_ = nullptr;
   first_.assign(vertex_count, 0);
   count_.assign(vertex_count, 0);
   capacity_.assign(vertex_count, 0);
@@ -154,15 +154,17 @@ VertexKind Topology::ring(uint32_t v, const uint32_t* tris, int max_valence, Rin
 }
 
 bool Topology::has_edge(uint32_t a, uint32_t b, const uint32_t* tris) const {
-  if (sibling_.empty()) return listed_edge(a, b, tris);
+  if (!siblings()) return listed_edge(a, b, tris);
   // Copies of one vertex (fan_split.h) are one vertex on output: an edge from any copy of a to
   // any copy of b is (a, b), and a copy to another would be a face's two corners at one place.
+  if (same_vertex(a, b)) return true;
+  const auto& next = *sibling_;
   for (uint32_t x = a;;) {
     for (uint32_t y = b;;) {
-      if (x == y || listed_edge(x, y, tris)) return true;
-      if ((y = sibling_[y]) == kNone || y == b) break;
+      if (listed_edge(x, y, tris)) return true;
+      if ((y = next[y]) == kNone || y == b) break;
     }
-    if ((x = sibling_[x]) == kNone || x == a) return false;
+    if ((x = next[x]) == kNone || x == a) return false;
   }
 }
 

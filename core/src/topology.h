@@ -6,7 +6,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <unordered_map>
-#include <utility>
 #include <vector>
 
 namespace vrs {
@@ -108,15 +107,24 @@ class Topology {
   // Whether (a, b) is an edge; between two hubs (kHubFaces) "yes" without a look (callers only
   // refuse to make an edge that exists). With siblings, whether it is one on output.
   bool has_edge(uint32_t a, uint32_t b, const uint32_t* tris) const;
-  // Vertices split for the run that are one on output (FanSplit::sibling: per vertex the next
-  // of its group, cyclic, kNone alone; empty: none).
-  void set_siblings(std::vector<uint32_t> sibling) { sibling_ = std::move(sibling); }
+  // Vertices split for the run that are one on output (FanSplit::sibling, kept by the caller:
+  // per vertex the next of its group, cyclic, kNone alone; null or empty: none).
+  void set_siblings(const std::vector<uint32_t>* sibling) { sibling_ = sibling; }
+  // Whether a and b are copies of one vertex (siblings).
+  bool same_vertex(uint32_t a, uint32_t b) const {
+    if (!siblings()) return a == b;
+    for (uint32_t x = a;;) {
+      if (x == b) return true;
+      if ((x = (*sibling_)[x]) == kNone || x == a) return false;
+    }
+  }
   int edge_faces(uint32_t a, uint32_t b, const uint32_t* tris) const; // faces holding edge (a, b)
   bool has_triangle(uint32_t a, uint32_t b, uint32_t c, const uint32_t* tris) const;
 
  private:
   void grow(uint32_t v);
   bool listed_edge(uint32_t a, uint32_t b, const uint32_t* tris) const; // in their own lists
+  bool siblings() const { return sibling_ && !sibling_->empty(); }
 
   // A hub's faces by their place in its list: removing one is O(1) (the last takes its
   // place) where a scan made a fan of 200 000 faces quadratic (2.8 s). Built for the vertices
@@ -135,7 +143,7 @@ class Topology {
   std::vector<uint32_t> first_, count_, capacity_;
   std::vector<uint8_t> is_hub_;
   std::vector<Hub> hubs_; // sorted by vertex
-  std::vector<uint32_t> sibling_;
+  const std::vector<uint32_t>* sibling_ = nullptr;
 };
 
 } // namespace vrs

@@ -55,7 +55,7 @@ TEST(FanSplit, EachFanOfAVertexGetsItsOwnCopyAndTheCopiesKnowEachOther) {
   EXPECT_EQ(topo.ring(0, m.triangles.data(), kMaxRing, ring), VertexKind::Interior);
   EXPECT_EQ(topo.ring(7, m.triangles.data(), kMaxRing, ring), VertexKind::Interior);
   // On output they are one vertex: an edge from a copy is an edge from the others.
-  topo.set_siblings(split.sibling);
+  topo.set_siblings(&split.sibling);
   EXPECT_TRUE(topo.has_edge(0, 4, m.triangles.data()));
   EXPECT_TRUE(topo.has_edge(7, 1, m.triangles.data()));
   EXPECT_TRUE(topo.has_edge(0, 7, m.triangles.data()));
