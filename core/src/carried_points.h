@@ -16,9 +16,9 @@ namespace vrs {
 
 class CarriedPoints {
  public:
-  void init(size_t face_slots, size_t vertices) {
-    head_.assign(face_slots, kNone);
-    next_.assign(vertices, kNone);
+  void init(size_t face_slots, size_t vertices, Workers* workers = nullptr) {
+    fill_on(workers, head_, face_slots, kNone);
+    fill_on(workers, next_, vertices, kNone);
   }
   bool active() const { return !head_.empty(); }
 
@@ -37,8 +37,8 @@ class CarriedPoints {
                    const float* cones) const;
 
  private:
-  std::vector<uint32_t> head_; // per face slot: the first point it carries, or kNone
-  std::vector<uint32_t> next_; // per vertex: the next point of the same face, or kNone
+  UninitVector<uint32_t> head_; // per face slot: the first point it carries, or kNone
+  UninitVector<uint32_t> next_; // per vertex: the next point of the same face, or kNone
 };
 
 } // namespace vrs

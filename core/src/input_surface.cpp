@@ -52,7 +52,7 @@ void InputSurface::order_faces(const Evaluator& eval) const {
     todo.push_back({r.begin, left, r.slots / 2});
   }
   std::vector<std::array<float, 3>>().swap(centre); // before the copy: a lower peak
-  std::vector<uint32_t> sorted(tris_.size());
+  UninitVector<uint32_t> sorted(tris_.size());
   for (size_t i = 0; i < faces; ++i)
     for (int k = 0; k < 3; ++k)
       sorted[3 * i + k] = tris_[3 * order[i] + k];

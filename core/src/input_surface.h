@@ -12,6 +12,7 @@
 
 #include "evaluation.h"
 #include "triangulation.h"
+#include "uninitialized.h"
 
 namespace vrs {
 
@@ -19,7 +20,12 @@ class InputSurface {
  public:
   // Copies the faces (the live array is rewritten as the run goes). Cheap: the hierarchy is
   // built only when asked for (build), and most runs never ask.
-  void keep(const std::vector<uint32_t>& tris) { tris_ = tris; }
+  void keep(const std::vector<uint32_t>& tris, Workers* workers = nullptr) {
+    tris_.resize(tris.size()); // copied block by block on the workers
+    for_each_block(workers, tris.size(), 3 * 65536, [&](size_t begin, size_t end) {
+      std::copy(tris.begin() + begin, tris.begin() + end, tris_.begin() + begin);
+    });
+  }
   // Builds the hierarchy over the faces kept; faces without area are left out (they have no
   // side). Once, by the first caller (folds() calls it, from any thread); nothing to do
   // afterwards. Runs on smooth meshes never ask, and never pay for it (0.35 s and 19 MB at
@@ -58,7 +64,7 @@ class InputSurface {
   // under build_once_, before any reader sees them.
   void build_now(const Evaluator& eval) const;
   mutable std::once_flag build_once_;
-  mutable std::vector<uint32_t> tris_;           // 3 a face, faces with area only
+  mutable UninitVector<uint32_t> tris_;          // 3 a face, faces with area only
   mutable double mean_area_ = 0;                 // of the input's faces with area
   mutable std::vector<std::vector<Box>> levels_; // levels_[0]: one box per leaf; the last: the root
 };

@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <array>
 #include <limits>
+#include <utility>
+
+#include "workers.h"
 
 namespace vrs {
 
@@ -229,15 +232,23 @@ double drop_height(uint32_t v, const Patch& patch, const Evaluator& eval) {
   return std::sqrt(worst);
 }
 
-double mean_triangle_area(const float* pos, const std::vector<uint32_t>& tris) {
+double mean_triangle_area(const float* pos, const std::vector<uint32_t>& tris, Workers* workers) {
+  // Summed in blocks of a fixed size, the blocks' sums in order: one result on any threads.
+  constexpr size_t kBlock = 3 * 65536;
+  std::vector<std::pair<double, size_t>> part((tris.size() + kBlock - 1) / kBlock);
+  for_each_block(workers, tris.size() - tris.size() % 3, kBlock, [&](size_t begin, size_t end) {
+    auto at = [&](uint32_t v) { return Vec3{pos[3 * v], pos[3 * v + 1], pos[3 * v + 2]}; };
+    auto& [sum, n] = part[begin / kBlock];
+    for (size_t i = begin; i < end; i += 3) {
+      Vec3 a = at(tris[i]);
+      double area = 0.5 * length(cross(at(tris[i + 1]) - a, at(tris[i + 2]) - a));
+      if (std::isfinite(area)) sum += area, ++n;
+    }
+  });
   double sum = 0;
   size_t n = 0;
-  for (size_t i = 0; i + 2 < tris.size(); i += 3) {
-    auto at = [&](uint32_t v) { return Vec3{pos[3 * v], pos[3 * v + 1], pos[3 * v + 2]}; };
-    Vec3 a = at(tris[i]);
-    double area = 0.5 * length(cross(at(tris[i + 1]) - a, at(tris[i + 2]) - a));
-    if (std::isfinite(area)) sum += area, ++n;
-  }
+  for (const auto& p : part)
+    sum += p.first, n += p.second;
   return n && sum > 0 ? sum / double(n) : 1.0;
 }
 

@@ -11,6 +11,8 @@
 
 namespace vrs {
 
+class Workers;
+
 // Distance from p to the triangle (a, b, c), exact (closest point on the triangle).
 double point_triangle_distance(Vec3 p, Vec3 a, Vec3 b, Vec3 c);
 double point_triangle_distance2(Vec3 p, Vec3 a, Vec3 b, Vec3 c); // squared
@@ -68,6 +70,7 @@ double moved_surface(const OldFan& fan, const Ring& ring, const Patch& patch, Ve
 double drop_height(uint32_t v, const Patch& patch, const Evaluator& eval);
 
 // Mean area of the finite triangles (1 when there is none): the weight's reference.
-double mean_triangle_area(const float* positions, const std::vector<uint32_t>& triangles);
+double mean_triangle_area(const float* positions, const std::vector<uint32_t>& triangles,
+                          Workers* workers = nullptr);
 
 } // namespace vrs

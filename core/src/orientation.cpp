@@ -217,7 +217,7 @@ TurnedByWelding turned_by_welding(const std::vector<uint32_t>& tris, const Topol
                                   const uint32_t* rank, Workers* workers) {
   TurnedByWelding out;
   Topology apart_topo;
-  apart_topo.build(apart, topo.vertex_count());
+  apart_topo.build(apart, topo.vertex_count(), workers);
   std::vector<uint8_t> flipped_apart;
   orient_coherently(apart, apart_topo, rank, flipped_apart, workers);
   const size_t faces = tris.size() / 3;

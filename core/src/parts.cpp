@@ -8,35 +8,48 @@
 
 #include "accounting.h"
 #include "simplifier.h"
+#include "workers.h"
 
 namespace vrs {
 
-Parts make_parts(const std::vector<uint32_t>& tris, size_t vertex_count, uint32_t size,
-                 uint32_t shift, const std::vector<uint32_t>& sibling) {
+Parts make_parts(const std::vector<uint32_t>& tris, const Topology& topo, uint32_t size,
+                 uint32_t shift, const std::vector<uint32_t>& sibling, Workers* workers) {
+  const size_t vertex_count = topo.vertex_count();
   Parts parts;
   parts.size = size;
   parts.shift = shift;
   parts.count = (vertex_count + shift + size - 1) / size;
+  // First the vertices on the cut (a face of theirs spans parts), then every vertex of a face
+  // holding one of those: a removable vertex's ring then lies in its part and never reaches a
+  // vertex whose ring another part may change. Each pass reads the one before and writes its
+  // own vertices' bytes only.
+  constexpr size_t kBlock = 16384;
+  std::vector<uint8_t> cut(vertex_count, 0);
+  for_each_block(workers, vertex_count, kBlock, [&](size_t begin, size_t end) {
+    for (size_t v = begin; v < end; ++v) {
+      if (v < sibling.size() && sibling[v] != kNone) {
+        cut[v] = 1;
+        continue;
+      }
+      const uint32_t* f = topo.faces_of(uint32_t(v));
+      const size_t part = parts.of(uint32_t(v));
+      for (uint32_t i = 0; i < topo.valence(uint32_t(v)) && !cut[v]; ++i)
+        for (int c = 0; c < 3; ++c)
+          if (parts.of(tris[3 * size_t(f[i]) + c]) != part) cut[v] = 1;
+    }
+  });
   parts.frozen.assign(vertex_count, 0);
   auto& frozen = parts.frozen;
-  // First the vertices of faces that span parts (a neighbour in another part), then every
-  // vertex of a face holding one of those: a removable vertex's ring then lies in its part
-  // and never reaches a vertex whose ring another part may change.
-  for (size_t i = 0; i + 2 < tris.size(); i += 3) {
-    const uint32_t a = tris[i], b = tris[i + 1], c = tris[i + 2];
-    if (a == kNone) continue;
-    const size_t pa = parts.of(a);
-    if (parts.of(b) != pa || parts.of(c) != pa) frozen[a] = frozen[b] = frozen[c] = 2;
-  }
-  for (size_t v = 0; v < sibling.size(); ++v)
-    if (sibling[v] != kNone) frozen[v] = 2;
-  for (size_t i = 0; i + 2 < tris.size(); i += 3) {
-    const uint32_t a = tris[i], b = tris[i + 1], c = tris[i + 2];
-    if (a == kNone) continue;
-    if ((frozen[a] | frozen[b] | frozen[c]) & 2)
-      for (uint32_t u : {a, b, c})
-        frozen[u] |= 1;
-  }
+  for_each_block(workers, vertex_count, kBlock, [&](size_t begin, size_t end) {
+    for (size_t v = begin; v < end; ++v) {
+      const uint32_t* f = topo.faces_of(uint32_t(v));
+      bool near = false;
+      for (uint32_t i = 0; i < topo.valence(uint32_t(v)) && !near; ++i)
+        for (int c = 0; c < 3; ++c)
+          near = near || cut[tris[3 * size_t(f[i]) + c]];
+      frozen[v] = uint8_t((cut[v] ? 2 : 0) | (near ? 1 : 0));
+    }
+  });
   return parts;
 }
 
@@ -196,7 +209,7 @@ bool Simplifier::run_parts() {
   const size_t needed0 = removals_needed();
   const uint32_t size = uint32_t(opt_.part_vertices);
   for (uint32_t shift : {0u, size / 2}) {
-    Parts parts = make_parts(mesh_.triangles, mesh_.vertex_count(), size, shift, fans_.sibling);
+    Parts parts = make_parts(mesh_.triangles, topo_, size, shift, fans_.sibling, &workers_);
     if (!run_cut(parts, needed0)) return false;
     price_frozen(parts);
   }
@@ -205,8 +218,9 @@ bool Simplifier::run_parts() {
 
 bool Simplifier::run_cut(Parts& parts, size_t needed0) {
   const size_t n = mesh_.vertex_count();
-  for (uint32_t v = 0; v < n; ++v) // seams merge constraints, a structure all parts share
-    if (constraints_.degree(v) > 0) parts.frozen[v] = 1;
+  if (constraints_.active()) // seams merge constraints, a structure all parts share
+    for (uint32_t v = 0; v < n; ++v)
+      if (constraints_.degree(v) > 0) parts.frozen[v] = 1;
   const uint8_t* frozen = parts.frozen.data();
   std::vector<Part> part(parts.count);
   workers_.for_each(
@@ -282,10 +296,18 @@ bool Simplifier::run_cut(Parts& parts, size_t needed0) {
 void Simplifier::price_frozen(const Parts& parts) {
   // The frozen vertices next to a removal: priced now, on the workers, for the next cut or
   // the whole queue.
+  // Found block by block on the workers, the blocks' lists joined in order.
+  constexpr size_t kBlock = 65536;
+  const size_t n = mesh_.vertex_count();
+  std::vector<std::vector<uint32_t>> found((n + kBlock - 1) / kBlock);
+  for_each_block(&workers_, n, kBlock, [&](size_t begin, size_t end) {
+    for (size_t v = begin; v < end; ++v)
+      if (parts.frozen[v] && flags_[v] & kFlagStale && !(flags_[v] & kFlagRemoved))
+        found[begin / kBlock].push_back(uint32_t(v));
+  });
   std::vector<uint32_t> stale;
-  for (uint32_t v = 0; v < mesh_.vertex_count(); ++v)
-    if (parts.frozen[v] && flags_[v] & kFlagStale && !(flags_[v] & kFlagRemoved))
-      stale.push_back(v);
+  for (const auto& f : found)
+    stale.insert(stale.end(), f.begin(), f.end());
   std::vector<Priced> priced(stale.size());
   workers_.for_each(stale.size(), [&](size_t i) { priced[i] = price_now(stale[i]); });
   for (size_t i = 0; i < stale.size(); ++i) {

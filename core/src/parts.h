@@ -15,6 +15,8 @@
 
 namespace vrs {
 
+class Workers;
+
 // Parts of Options::part_vertices vertices, consecutive in the spatial order (which follows
 // a Z-order curve): an option, not the thread count, so that the output does not depend on it.
 // A second cut shifted by half a part puts the first one's borders inside parts.
@@ -31,11 +33,12 @@ struct Parts {
   }
 };
 
-// `tris` in the spatial order; dead faces (kNone) are skipped. Vertices with a `sibling`
+// `topo` lists the live faces of `tris` (in the spatial order). Vertices with a `sibling`
 // (fan_split.h; empty: none) stay frozen with their neighbours: an edge test at one reads
-// another's lists, which may lie in another part.
-Parts make_parts(const std::vector<uint32_t>& tris, size_t vertex_count, uint32_t size,
-                 uint32_t shift, const std::vector<uint32_t>& sibling = {});
+// another's lists, which may lie in another part. Vertex by vertex on the workers when given.
+Parts make_parts(const std::vector<uint32_t>& tris, const Topology& topo, uint32_t size,
+                 uint32_t shift, const std::vector<uint32_t>& sibling = {},
+                 Workers* workers = nullptr);
 
 // A part's own queue: an exact heap over the part's range of vertices, 12 bytes an entry
 // (the whole mesh's hash table spans all vertices: one a part would cost parts x vertices).

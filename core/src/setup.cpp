@@ -101,8 +101,8 @@ void Simplifier::first_prices(std::vector<uint8_t>& kinds, std::vector<Priced>& 
   const auto& t = mesh_.triangles;
   // The normal cones and fan areas vertex by vertex on the workers (summed face by face on
   // one thread, they were a fifth of the run's serial part).
-  normals_.assign(4 * n, 0.0f);
-  if (lazy_) fan_area_.assign(n, 0.0f);
+  normals_.resize(4 * n);
+  if (lazy_) fan_area_.resize(n);
   workers_.for_each(
       n,
       [&](size_t v) {
@@ -110,7 +110,7 @@ void Simplifier::first_prices(std::vector<uint8_t>& kinds, std::vector<Priced>& 
                     lazy_ ? &fan_area_[v] : nullptr);
       },
       1024);
-  reference_area_ = mean_triangle_area(mesh_.positions.data(), t);
+  reference_area_ = mean_triangle_area(mesh_.positions.data(), t, &workers_);
   planner_ =
       Planner(eval_, topo_, t.data(), normals_.data(), limits_, Pricer{&estimate, &price, this},
               opt_.fill == Fill::Best, opt_.mode != Mode::Surface3D);
@@ -120,7 +120,7 @@ void Simplifier::first_prices(std::vector<uint8_t>& kinds, std::vector<Priced>& 
     planner_.set_face_bounds(face_bound_.data());
   }
   if (opt_.against_input && opt_.priority == Priority::LocalError) {
-    carried_.init(t.size() / 3, n);
+    carried_.init(t.size() / 3, n, &workers_);
     planner_.set_carried(&carried_);
   }
   jump_floor_ = 1e-3 * bounding_box_diagonal(mesh_);
@@ -179,7 +179,7 @@ bool Simplifier::split_fans_apart(const std::vector<uint8_t>& kinds) {
   eval_.set_positions(pos.data());
   for (uint32_t o : fans_.original)
     flags_.push_back(flags_[o]);
-  topo_.build(mesh_.triangles, mesh_.vertex_count());
+  topo_.build(mesh_.triangles, mesh_.vertex_count(), &workers_);
   topo_.set_siblings(&fans_.sibling);
   return true;
 }
@@ -188,7 +188,7 @@ void Simplifier::prepare() {
   const size_t n = mesh_.vertex_count();
   // First: the faces' corners then name the copies that stand for the split ones.
   if (opt_.split_vertices != SplitVertices::Keep) {
-    welding_ = weld_split_vertices(mesh_.triangles, mesh_.positions);
+    welding_ = weld_split_vertices(mesh_.triangles, mesh_.positions, &workers_);
     rep_.welded_vertices = welding_.welded;
   }
   auto standing = [&](uint32_t v) { return welding_.rep.empty() ? v : welding_.rep[v]; };
@@ -197,8 +197,10 @@ void Simplifier::prepare() {
   order_ = spatial_order(mesh_.positions, mesh_.triangles, &workers_);
   {
     std::vector<uint32_t> source(face_source_.size());
-    for (size_t f = 0; f < source.size(); ++f)
-      source[f] = face_source_[order_.face_old[f]];
+    for_each_block(&workers_, source.size(), 65536, [&](size_t begin, size_t end) {
+      for (size_t f = begin; f < end; ++f)
+        source[f] = face_source_[order_.face_old[f]];
+    });
     face_source_.swap(source);
   }
   flags_.assign(n, 0);
@@ -218,7 +220,7 @@ void Simplifier::prepare() {
         flags_[t[i]] |= kFlagLocked, flags_[t[i + 1]] |= kFlagLocked,
             flags_[t[i + 2]] |= kFlagLocked;
 
-  topo_.build(t, n);
+  topo_.build(t, n, &workers_);
   // Before anything reads a fan: faces written in random orientation make every vertex look
   // non-manifold.
   std::vector<uint8_t> reversed;
@@ -307,7 +309,7 @@ void Simplifier::prepare() {
   // Not when the target is asked at any cost (max_price_jump 0): the eased passes then fold
   // where nothing else reaches it, as before. The hierarchy is built when a plan first asks.
   if (opt_.against_input && opt_.relax_to_reach_target && opt_.max_price_jump > 0) {
-    input_.keep(t);
+    input_.keep(t, &workers_);
     planner_.set_input(&input_);
   }
 }

@@ -186,9 +186,10 @@ class Simplifier {
   std::vector<Priced> repriced_;
   Planner planner_{eval_, topo_, mesh_.triangles.data(), nullptr, limits_, {}, false};
   std::vector<float> factor_;
-  std::vector<float> fan_area_; // area of each vertex's faces (kept up to date with lazy_)
-  std::vector<float> normals_;  // unit vertex normals of the input surface, 3 a vertex
-  std::vector<uint8_t> flags_;  // vertex_flags.h
+  // Written whole by the workers at the first prices (no serial fill first).
+  UninitVector<float> fan_area_; // area of each vertex's faces (kept up to date with lazy_)
+  UninitVector<float> normals_;  // unit vertex normals of the input surface, 3 a vertex
+  std::vector<uint8_t> flags_;   // vertex_flags.h
   void set_refused(uint32_t v, Reject why) { flip_refused_ += size_t(refuse(v, why)); }
   // Records v's last refusal; returns the change of flip_refused_ (parts count their own).
   ptrdiff_t refuse(uint32_t v, Reject why) {

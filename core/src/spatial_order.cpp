@@ -1,9 +1,12 @@
 #include "spatial_order.h"
 
 #include <algorithm>
+#include <array>
 #include <cmath>
 #include <functional>
 #include <limits>
+
+#include "uninitialized.h"
 
 namespace vrs {
 
@@ -23,26 +26,45 @@ uint64_t spread3(uint64_t x) {
 // Blocks of the loops over vertices and faces, on the workers when given.
 constexpr size_t kBlock = 65536;
 
+// A vertex's Morton code and input index: sorting them orders ties by index (unique).
+struct Key {
+  uint64_t code;
+  uint32_t index;
+  bool operator<(const Key& o) const {
+    return code < o.code || (code == o.code && index < o.index);
+  }
+};
+
 } // namespace
 
 SpatialOrder spatial_order(std::vector<float>& positions, std::vector<uint32_t>& triangles,
                            Workers* workers) {
   const size_t n = positions.size() / 3, faces = triangles.size() / 3;
+  // The bounding box of the finite positions, block by block (min and max: one result).
+  const size_t blocks = (n + kBlock - 1) / kBlock;
+  std::vector<std::array<float, 6>> box(blocks);
+  for_each_block(workers, n, kBlock, [&](size_t begin, size_t end) {
+    auto& b = box[begin / kBlock];
+    for (int a = 0; a < 3; ++a)
+      b[a] = std::numeric_limits<float>::max(), b[3 + a] = -std::numeric_limits<float>::max();
+    for (size_t v = begin; v < end; ++v) {
+      const float* p = &positions[3 * v];
+      if (!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]))) continue;
+      for (int a = 0; a < 3; ++a)
+        b[a] = std::min(b[a], p[a]), b[3 + a] = std::max(b[3 + a], p[a]);
+    }
+  });
   float lo[3], hi[3];
   for (int a = 0; a < 3; ++a)
     lo[a] = std::numeric_limits<float>::max(), hi[a] = -std::numeric_limits<float>::max();
-  for (size_t v = 0; v < n; ++v) {
-    const float* p = &positions[3 * v];
-    if (!(std::isfinite(p[0]) && std::isfinite(p[1]) && std::isfinite(p[2]))) continue;
+  for (const auto& b : box)
     for (int a = 0; a < 3; ++a)
-      lo[a] = std::min(lo[a], p[a]), hi[a] = std::max(hi[a], p[a]);
-  }
+      lo[a] = std::min(lo[a], b[a]), hi[a] = std::max(hi[a], b[3 + a]);
   double scale[3];
   for (int a = 0; a < 3; ++a)
     scale[a] = hi[a] > lo[a] ? double(0x1fffff) / (double(hi[a]) - double(lo[a])) : 0.0;
 
-  // (code, input index) pairs: sorting them orders ties by index, so the result is unique.
-  std::vector<std::pair<uint64_t, uint32_t>> keys(n);
+  UninitVector<Key> keys(n);
   for_each_block(workers, n, kBlock, [&](size_t begin, size_t end) {
     for (size_t v = begin; v < end; ++v) {
       const float* p = &positions[3 * v];
@@ -72,18 +94,21 @@ SpatialOrder spatial_order(std::vector<float>& positions, std::vector<uint32_t>&
   order.vertex_new.resize(n);
   for_each_block(workers, n, kBlock, [&](size_t begin, size_t end) {
     for (size_t i = begin; i < end; ++i) {
-      order.vertex_old[i] = keys[i].second;
-      order.vertex_new[keys[i].second] = uint32_t(i);
+      order.vertex_old[i] = keys[i].index;
+      order.vertex_new[keys[i].index] = uint32_t(i);
     }
   });
-  std::vector<std::pair<uint64_t, uint32_t>>().swap(keys);
+  UninitVector<Key>().swap(keys);
   {
-    std::vector<float> moved(positions.size());
+    UninitVector<float> moved(positions.size());
     for_each_block(workers, n, kBlock, [&](size_t begin, size_t end) {
       for (size_t i = begin; i < end; ++i)
         std::copy_n(&positions[3 * size_t(order.vertex_old[i])], 3, &moved[3 * i]);
     });
-    std::copy(moved.begin(), moved.end(), positions.begin()); // same buffer: callers hold it
+    // Back into the same buffer (callers hold it).
+    for_each_block(workers, moved.size(), 3 * kBlock, [&](size_t begin, size_t end) {
+      std::copy(moved.begin() + begin, moved.begin() + end, positions.begin() + begin);
+    });
   }
 
   // Faces: counting sort by their lowest new corner (stable, linear).
@@ -91,22 +116,50 @@ SpatialOrder spatial_order(std::vector<float>& positions, std::vector<uint32_t>&
     for (size_t i = begin; i < end; ++i)
       triangles[i] = order.vertex_new[triangles[i]];
   });
-  std::vector<uint32_t> start(n + 1, 0);
-  for (size_t f = 0; f < faces; ++f)
-    ++start[1 + std::min({triangles[3 * f], triangles[3 * f + 1], triangles[3 * f + 2]})];
-  for (size_t v = 0; v < n; ++v)
-    start[v + 1] += start[v];
+  // A range of lowest corners a thread, each reading every face: counted, then placed in face
+  // order (the order of one pass, whatever the threads).
+  const size_t ranges = workers ? size_t(workers->threads()) : 1;
+  const size_t per = (n + ranges - 1) / std::max<size_t>(ranges, 1);
+  auto lowest = [&](size_t f) {
+    return std::min({triangles[3 * f], triangles[3 * f + 1], triangles[3 * f + 2]});
+  };
+  UninitVector<uint32_t> start(n);
+  std::vector<size_t> in_range(ranges + 1, 0);
+  for_each_on(workers, ranges, [&](size_t r) {
+    const size_t lo = std::min(n, r * per), hi = std::min(n, (r + 1) * per);
+    std::fill(start.begin() + lo, start.begin() + hi, 0u);
+    for (size_t f = 0; f < faces; ++f) {
+      const uint32_t v = lowest(f);
+      if (v - lo < hi - lo) ++start[v];
+    }
+    for (size_t v = lo; v < hi; ++v)
+      in_range[r + 1] += start[v];
+  });
+  for (size_t r = 0; r < ranges; ++r)
+    in_range[r + 1] += in_range[r];
   order.face_old.resize(faces);
-  for (size_t f = 0; f < faces; ++f)
-    order.face_old[start[std::min(
-        {triangles[3 * f], triangles[3 * f + 1], triangles[3 * f + 2]})]++] = uint32_t(f);
-  std::vector<uint32_t>().swap(start);
-  std::vector<uint32_t> moved(triangles.size());
+  for_each_on(workers, ranges, [&](size_t r) {
+    const size_t lo = std::min(n, r * per), hi = std::min(n, (r + 1) * per);
+    uint32_t at = uint32_t(in_range[r]);
+    for (size_t v = lo; v < hi; ++v) {
+      const uint32_t count = start[v];
+      start[v] = at;
+      at += count;
+    }
+    for (size_t f = 0; f < faces; ++f) {
+      const uint32_t v = lowest(f);
+      if (v - lo < hi - lo) order.face_old[start[v]++] = uint32_t(f);
+    }
+  });
+  UninitVector<uint32_t>().swap(start);
+  UninitVector<uint32_t> moved(triangles.size());
   for_each_block(workers, faces, kBlock, [&](size_t begin, size_t end) {
     for (size_t f = begin; f < end; ++f)
       std::copy_n(&triangles[3 * size_t(order.face_old[f])], 3, &moved[3 * f]);
   });
-  std::copy(moved.begin(), moved.end(), triangles.begin());
+  for_each_block(workers, moved.size(), 3 * kBlock, [&](size_t begin, size_t end) {
+    std::copy(moved.begin() + begin, moved.begin() + end, triangles.begin() + begin);
+  });
   return order;
 }
 

@@ -5,6 +5,7 @@
 
 #include "topology.h"
 #include "vrs/simplify.h"
+#include "workers.h"
 
 namespace vrs {
 
@@ -41,48 +42,68 @@ template <class T, class Run> void sorted_runs(std::vector<T>& v, Run run) {
   }
 }
 
+uint64_t position_hash(const float* p) {
+  uint32_t bits[3];
+  std::memcpy(bits, p, sizeof bits);
+  uint64_t h = (bits[0] * 0x9E3779B97F4A7C15ull) ^ (bits[1] * 0xC2B2AE3D27D4EB4Full) ^
+               (bits[2] * 0x165667B19E3779F9ull);
+  return h ^ h >> 29;
+}
+
 // For each referenced vertex, the first referenced vertex at the same position, bit for bit
-// (kNone: unreferenced); false when no two share one.
+// (kNone: unreferenced); false when no two share one. A thread a group of positions (by their
+// hash's top bits), each with its own table filled in vertex order: the classes of one pass.
 bool position_classes(const std::vector<uint32_t>& tris, const std::vector<float>& pos,
-                      std::vector<uint32_t>& cls) {
+                      std::vector<uint32_t>& cls, Workers* workers) {
   const size_t n = pos.size() / 3;
-  cls.assign(n, kNone);
-  for (uint32_t v : tris)
-    cls[v] = v;
-  size_t cap = 16;
-  while (cap < 2 * n)
-    cap <<= 1;
-  std::vector<uint32_t> table(cap, kNone); // open addressing, linear probing
-  bool any = false;
-  for (uint32_t v = 0; v < n; ++v) {
-    if (cls[v] == kNone) continue;
-    uint32_t bits[3];
-    std::memcpy(bits, &pos[3 * size_t(v)], sizeof bits);
-    uint64_t h = (bits[0] * 0x9E3779B97F4A7C15ull) ^ (bits[1] * 0xC2B2AE3D27D4EB4Full) ^
-                 (bits[2] * 0x165667B19E3779F9ull);
-    h ^= h >> 29;
-    for (size_t s = h & (cap - 1);; s = (s + 1) & (cap - 1)) {
-      const uint32_t u = table[s];
-      if (u == kNone) {
-        table[s] = v;
-        break;
-      }
-      if (std::memcmp(&pos[3 * size_t(u)], &pos[3 * size_t(v)], sizeof bits) == 0) {
-        cls[v] = u;
-        any = true;
-        break;
+  const size_t groups = workers ? size_t(workers->threads()) : 1;
+  cls.resize(n);
+  // Referenced vertices: a range of vertices a thread, each reading every corner.
+  const size_t per = (n + groups - 1) / groups;
+  for_each_on(workers, groups, [&](size_t g) {
+    const size_t lo = std::min(n, g * per), hi = std::min(n, (g + 1) * per);
+    std::fill(cls.begin() + lo, cls.begin() + hi, kNone);
+    for (uint32_t v : tris)
+      if (v - lo < hi - lo) cls[v] = v;
+  });
+  auto group_of = [groups](uint64_t h) { return size_t((h >> 40) % groups); };
+  std::vector<uint8_t> any(groups, 0);
+  for_each_on(workers, groups, [&](size_t g) {
+    size_t members = 0;
+    for (uint32_t v = 0; v < n; ++v)
+      members += cls[v] != kNone && group_of(position_hash(&pos[3 * size_t(v)])) == g;
+    size_t cap = 16;
+    while (cap < 2 * members)
+      cap <<= 1;
+    std::vector<uint32_t> table(cap, kNone); // open addressing, linear probing
+    for (uint32_t v = 0; v < n; ++v) {
+      if (cls[v] == kNone) continue;
+      const uint64_t h = position_hash(&pos[3 * size_t(v)]);
+      if (group_of(h) != g) continue;
+      for (size_t s = h & (cap - 1);; s = (s + 1) & (cap - 1)) {
+        const uint32_t u = table[s];
+        if (u == kNone) {
+          table[s] = v;
+          break;
+        }
+        if (std::memcmp(&pos[3 * size_t(u)], &pos[3 * size_t(v)], 3 * sizeof(float)) == 0) {
+          cls[v] = u;
+          any[g] = 1;
+          break;
+        }
       }
     }
-  }
-  return any;
+  });
+  return std::find(any.begin(), any.end(), 1) != any.end();
 }
 
 } // namespace
 
-Welding weld_split_vertices(std::vector<uint32_t>& tris, const std::vector<float>& positions) {
+Welding weld_split_vertices(std::vector<uint32_t>& tris, const std::vector<float>& positions,
+                            Workers* workers) {
   Welding w;
   std::vector<uint32_t> cls;
-  if (!position_classes(tris, positions, cls)) return w;
+  if (!position_classes(tris, positions, cls, workers)) return w;
   const size_t n = cls.size();
   std::vector<uint32_t> copies(n, 0);
   for (size_t v = 0; v < n; ++v)

@@ -11,6 +11,8 @@
 
 namespace vrs {
 
+class Workers;
+
 struct Welding {
   // Input vertex -> the copy that stands for it (the lowest index of its welded set; itself
   // when alone). Empty: nothing welded (then the rest is empty too).
@@ -29,7 +31,8 @@ struct Welding {
 // positions, walked either way (bit-for-bit equal coordinates; an edge position held by more
 // than two border edges is left alone), unless a face would then hold one vertex twice or an
 // edge get a third face. Rewrites `tris` to the standing copies. Costs one hash of the
-// referenced positions when nothing is split.
-Welding weld_split_vertices(std::vector<uint32_t>& tris, const std::vector<float>& positions);
+// referenced positions when nothing is split (on the workers when given).
+Welding weld_split_vertices(std::vector<uint32_t>& tris, const std::vector<float>& positions,
+                            Workers* workers = nullptr);
 
 } // namespace vrs

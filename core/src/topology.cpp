@@ -2,30 +2,55 @@
 
 #include <algorithm>
 
+#include "workers.h"
+
 namespace vrs {
 
-void Topology::build(const std::vector<uint32_t>& triangles, size_t vertex_count) {
+void Topology::build(const std::vector<uint32_t>& triangles, size_t vertex_count,
+                     Workers* workers) {
   sibling_ = nullptr;
-  first_.assign(vertex_count, 0);
-  count_.assign(vertex_count, 0);
-  capacity_.assign(vertex_count, 0);
-  for (uint32_t c : triangles)
-    ++capacity_[c];
-  // Slack of 2 per vertex: after a removal a neighbour usually gains at most one or two faces,
-  // so most slices never move.
-  size_t offset = 0;
-  for (size_t v = 0; v < vertex_count; ++v) {
-    first_[v] = static_cast<uint32_t>(offset);
-    capacity_[v] += 2;
-    offset += capacity_[v];
-  }
-  pool_.reserve(offset + offset / 4);
-  pool_.assign(offset, kNone);
-  for (size_t i = 0; i < triangles.size(); ++i) {
-    uint32_t v = triangles[i];
-    pool_[first_[v] + count_[v]++] = static_cast<uint32_t>(i / 3);
-  }
-  is_hub_.assign(vertex_count, 0);
+  // A range of vertices a thread: each reads every corner and writes only its own vertices'
+  // counts and lists, in face order (the lists of one pass, whatever the threads). Scattered
+  // writes are most of the time; the corners' reading is sequential.
+  const size_t ranges = workers ? size_t(workers->threads()) : 1;
+  const size_t per = (vertex_count + ranges - 1) / std::max<size_t>(ranges, 1);
+  auto range = [&](size_t r) {
+    return std::make_pair(std::min(vertex_count, r * per), std::min(vertex_count, (r + 1) * per));
+  };
+  first_.resize(vertex_count);
+  count_.resize(vertex_count);
+  capacity_.resize(vertex_count);
+  is_hub_.resize(vertex_count);
+  std::vector<size_t> slots(ranges + 1, 0);
+  for_each_on(workers, ranges, [&](size_t r) {
+    const auto [lo, hi] = range(r);
+    // Slack of 2 per vertex: after a removal a neighbour usually gains at most one or two
+    // faces, so most slices never move.
+    std::fill(capacity_.begin() + lo, capacity_.begin() + hi, 2u);
+    std::fill(count_.begin() + lo, count_.begin() + hi, 0u);
+    for (uint32_t c : triangles)
+      if (c - lo < hi - lo) ++capacity_[c];
+    for (size_t v = lo; v < hi; ++v)
+      slots[r + 1] += capacity_[v];
+  });
+  for (size_t r = 0; r < ranges; ++r)
+    slots[r + 1] += slots[r];
+  pool_.reserve(slots[ranges] + slots[ranges] / 4);
+  pool_.resize(slots[ranges]);
+  for_each_on(workers, ranges, [&](size_t r) {
+    const auto [lo, hi] = range(r);
+    size_t offset = slots[r];
+    for (size_t v = lo; v < hi; ++v) {
+      first_[v] = static_cast<uint32_t>(offset);
+      offset += capacity_[v];
+      is_hub_[v] = 0;
+    }
+    std::fill(pool_.begin() + slots[r], pool_.begin() + slots[r + 1], kNone);
+    for (size_t i = 0; i < triangles.size(); ++i) {
+      const uint32_t v = triangles[i];
+      if (v - lo < hi - lo) pool_[first_[v] + count_[v]++] = static_cast<uint32_t>(i / 3);
+    }
+  });
   hubs_.clear();
   for (uint32_t v = 0; v < vertex_count; ++v)
     if (count_[v] > kHubFaces) {

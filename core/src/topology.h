@@ -8,7 +8,11 @@
 #include <unordered_map>
 #include <vector>
 
+#include "uninitialized.h"
+
 namespace vrs {
+
+class Workers;
 
 constexpr uint32_t kNone = 0xffffffffu;
 // Hard cap of the ring buffers (stack arrays, so the main loop never allocates).
@@ -48,7 +52,9 @@ constexpr uint32_t kHubFaces = 1024;
 class Topology {
  public:
   // `triangles` must hold valid indices with three distinct corners each; it is read, not kept.
-  void build(const std::vector<uint32_t>& triangles, size_t vertex_count);
+  // Each list holds its faces in increasing order, whatever the workers.
+  void build(const std::vector<uint32_t>& triangles, size_t vertex_count,
+             Workers* workers = nullptr);
 
   uint32_t valence(uint32_t v) const { return count_[v]; } // number of incident triangles
   size_t vertex_count() const { return count_.size(); }
@@ -139,9 +145,9 @@ class Topology {
                              [](const Hub& h, uint32_t x) { return h.v < x; });
   }
 
-  std::vector<uint32_t> pool_; // per-vertex slices of triangle ids, with slack
-  std::vector<uint32_t> first_, count_, capacity_;
-  std::vector<uint8_t> is_hub_;
+  UninitVector<uint32_t> pool_; // per-vertex slices of triangle ids, with slack
+  UninitVector<uint32_t> first_, count_, capacity_;
+  UninitVector<uint8_t> is_hub_;
   std::vector<Hub> hubs_; // sorted by vertex
   const std::vector<uint32_t>* sibling_ = nullptr;
 };

@@ -16,8 +16,10 @@ using namespace vrs;
 TEST(Parts, AVertexLeftFreeHasItsWholeNeighbourhoodInItsPart) {
   Mesh m = vrs_test::icosphere(5);         // 10242 vertices
   spatial_order(m.positions, m.triangles); // as the driver cuts it
+  Topology topo;
+  topo.build(m.triangles, m.vertex_count());
   for (uint32_t shift : {0u, 128u}) {
-    const Parts parts = make_parts(m.triangles, m.vertex_count(), 256, shift);
+    const Parts parts = make_parts(m.triangles, topo, 256, shift);
     ASSERT_EQ(parts.count, (m.vertex_count() + shift + 255) / 256);
     size_t free = 0;
     for (size_t i = 0; i < m.triangles.size(); i += 3) {
