@@ -5,7 +5,7 @@
 # packages installed with apt-get), the wheel in a fresh virtual environment (with the examples
 # the README and the documentation show), the documentation site, then the core, CLI
 # and sweep tests again built with AddressSanitizer + UndefinedBehaviorSanitizer in build/asan/
-# (MeshLab cannot load an instrumented plugin), the thread, parts and fan-split tests under
+# (MeshLab cannot load an instrumented plugin), the thread, parts, fan-split and set-up tests under
 # ThreadSanitizer in build/tsan/, then a bounded libFuzzer run (VRS_FUZZ_SECONDS, default 120,
 # from a fixed seed, VRS_FUZZ_SEED, default 1, so that a run judges the change and not the
 # draw; scripts/fuzz.sh alone draws a new seed each time and runs longer, to find what is new).
@@ -29,10 +29,11 @@ if [ "${1:-}" != "--no-sanitizers" ]; then
   echo "== the worker threads under ThreadSanitizer"
   cmake -S "$top" -B "$top/build/tsan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVRS_TSAN=ON \
     -DVRS_BUILD_TESTS=ON -DVRS_BUILD_TOOLS=OFF -DVRS_BUILD_PLUGIN=OFF -DVRS_BUILD_BENCH=OFF >/dev/null
-  cmake --build "$top/build/tsan" --target test_threads test_parts test_fan_split -j "$(nproc)"
+  cmake --build "$top/build/tsan" --target test_threads test_parts test_fan_split test_setup_threads -j "$(nproc)"
   TSAN_OPTIONS=halt_on_error=1 "$top/build/tsan/bin/test_threads" --gtest_filter='Workers.*:Threads.*'
   TSAN_OPTIONS=halt_on_error=1 "$top/build/tsan/bin/test_parts"
   TSAN_OPTIONS=halt_on_error=1 "$top/build/tsan/bin/test_fan_split"
+  TSAN_OPTIONS=halt_on_error=1 "$top/build/tsan/bin/test_setup_threads"
   echo "== libFuzzer on the core, ${VRS_FUZZ_SECONDS:-120} s"
   VRS_FUZZ_SEED=${VRS_FUZZ_SEED:-1} "$top/scripts/fuzz.sh" "${VRS_FUZZ_SECONDS:-120}"
 fi

@@ -15,7 +15,7 @@ namespace vrs {
 // What the run kept per face slot (internal order): the input face (kRemoved: rewritten), the
 // input corner each corner carries (empty: not asked), the certified bound (empty: none).
 struct SlotRecords {
-  const std::vector<uint32_t>& face_source;
+  const UninitVector<uint32_t>& face_source;
   const std::vector<uint32_t>& corner_source;
   const std::vector<float>& face_bound;
   // Split vertices welded for the run (split_vertices.h; empty: none): each input corner's

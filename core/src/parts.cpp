@@ -250,16 +250,29 @@ bool Simplifier::run_cut(Parts& parts, size_t needed0) {
   // The price is read off a sample of the vertices (every stride-th), the same for any
   // threads: the whole list's nth_element was a tenth of the serial time.
   const size_t stride = std::max<size_t>(1, n / 65536);
+  const size_t samples = (n + stride - 1) / stride;
+  constexpr size_t kSampleBlock = 4096;
+  std::vector<std::vector<float>> sampled((samples + kSampleBlock - 1) / kSampleBlock);
   for (int round = 0; round < kPartRounds; ++round) {
     const size_t needed = removals_needed();
     if (needed <= needed0 * kPartsLeave) break;
     // The frozen vertices count too (at their last price): left out, the price climbed past
     // them while they waited, and parts of 1024 vertices came out 9x the error.
+    // Read in blocks on the workers (scattered reads: a fifth of the serial time by parts);
+    // the k-th price does not depend on the order they are joined in.
+    for_each_block(&workers_, samples, kSampleBlock, [&](size_t begin, size_t end) {
+      auto& out = sampled[begin / kSampleBlock];
+      out.clear();
+      for (size_t i = begin; i < end; ++i) {
+        const uint32_t v = uint32_t(i * stride);
+        if (frozen[v] ? !(flags_[v] & kFlagRemoved) && std::isfinite(factor_[v])
+                      : part[parts.of(v)].queue.contains(v))
+          out.push_back(factor_[v]);
+      }
+    });
     prices.clear();
-    for (uint32_t v = 0; v < n; v += uint32_t(stride))
-      if (frozen[v] ? !(flags_[v] & kFlagRemoved) && std::isfinite(factor_[v])
-                    : part[parts.of(v)].queue.contains(v))
-        prices.push_back(factor_[v]);
+    for (const auto& s : sampled)
+      prices.insert(prices.end(), s.begin(), s.end());
     const size_t k = std::min(prices.size(), needed / 2 / stride);
     if (k == 0) break;
     std::nth_element(prices.begin(), prices.begin() + (k - 1), prices.end());

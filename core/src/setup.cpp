@@ -14,7 +14,27 @@ namespace {
 
 constexpr uint8_t kKeptOnConstraints = 128; // beside a VertexKind in the set-up's kinds
 
-size_t drop_repeated_corner_faces(std::vector<uint32_t>& tris, std::vector<uint32_t>& source) {
+size_t drop_repeated_corner_faces(std::vector<uint32_t>& tris, UninitVector<uint32_t>& source,
+                                  Workers* workers) {
+  // Counted in blocks on the workers; with none to drop (the usual input) each face is its own
+  // source, written in blocks too.
+  constexpr size_t kBlock = 65536;
+  const size_t faces = tris.size() / 3;
+  std::vector<size_t> repeated((faces + kBlock - 1) / kBlock, 0);
+  for_each_block(workers, faces, kBlock, [&](size_t begin, size_t end) {
+    for (size_t f = begin; f < end; ++f) {
+      const uint32_t a = tris[3 * f], b = tris[3 * f + 1], c = tris[3 * f + 2];
+      repeated[begin / kBlock] += a == b || b == c || c == a;
+    }
+  });
+  if (std::all_of(repeated.begin(), repeated.end(), [](size_t r) { return r == 0; })) {
+    source.resize(faces);
+    for_each_block(workers, faces, kBlock, [&](size_t begin, size_t end) {
+      for (size_t f = begin; f < end; ++f)
+        source[f] = static_cast<uint32_t>(f);
+    });
+    return 0;
+  }
   size_t out = 0;
   source.clear();
   source.reserve(tris.size() / 3);
@@ -96,7 +116,7 @@ void Simplifier::lock_split_seams() {
 
 // The set-up that reads the fans, up to every vertex's kind and first price: made again when
 // fans were split apart (the run's numbering then has the copies).
-void Simplifier::first_prices(std::vector<uint8_t>& kinds, std::vector<Priced>& first) {
+void Simplifier::first_prices(UninitVector<uint8_t>& kinds, UninitVector<FirstPrice>& first) {
   const size_t n = mesh_.vertex_count();
   const auto& t = mesh_.triangles;
   // The normal cones and fan areas vertex by vertex on the workers (summed face by face on
@@ -124,7 +144,7 @@ void Simplifier::first_prices(std::vector<uint8_t>& kinds, std::vector<Priced>& 
     planner_.set_carried(&carried_);
   }
   jump_floor_ = 1e-3 * bounding_box_diagonal(mesh_);
-  factor_.assign(n, std::numeric_limits<float>::infinity());
+  fill_on(&workers_, factor_, n, std::numeric_limits<float>::infinity());
   faces_ = faces0_ = t.size() / 3;
   const TargetKind tk = opt_.target.kind;
   target_faces_ = tk == TargetKind::Faces ? opt_.target.faces
@@ -137,8 +157,8 @@ void Simplifier::first_prices(std::vector<uint8_t>& kinds, std::vector<Priced>& 
     lock_split_seams();
   // Every vertex's kind and first price, on the workers (reads only; each writes its own
   // slots); the caller counts them in vertex order.
-  kinds.assign(n, 0);
-  first.assign(n, Priced{});
+  kinds.resize(n);
+  first.resize(n);
   workers_.for_each(
       n,
       [&](size_t i) {
@@ -150,13 +170,15 @@ void Simplifier::first_prices(std::vector<uint8_t>& kinds, std::vector<Priced>& 
         std::array<int, 2> seam;
         if (along(v, ring, seam) == Along::Kept)
           kinds[v] |= kKeptOnConstraints;
-        else
-          first[v] = evaluate(v, ring);
+        else {
+          const Priced p = evaluate(v, ring);
+          first[v] = {p.priority, p.why, p.planned};
+        }
       },
       256);
 }
 
-bool Simplifier::split_fans_apart(const std::vector<uint8_t>& kinds) {
+bool Simplifier::split_fans_apart(const UninitVector<uint8_t>& kinds) {
   // Not with constraints (their edges name the vertices as they were), nor where faces were
   // reoriented (which faces make a fan then follows the orientation chosen; a fuzzer's mesh
   // of pieces so turned changed topology), nor a second time.
@@ -192,20 +214,19 @@ void Simplifier::prepare() {
     rep_.welded_vertices = welding_.welded;
   }
   auto standing = [&](uint32_t v) { return welding_.rep.empty() ? v : welding_.rep[v]; };
-  rep_.dropped_degenerate_faces = drop_repeated_corner_faces(mesh_.triangles, face_source_);
+  rep_.dropped_degenerate_faces =
+      drop_repeated_corner_faces(mesh_.triangles, face_source_, &workers_);
   // Inside, vertices and faces go in spatial order (compact() restores the input's).
   order_ = spatial_order(mesh_.positions, mesh_.triangles, &workers_);
   {
-    std::vector<uint32_t> source(face_source_.size());
+    UninitVector<uint32_t> source(face_source_.size());
     for_each_block(&workers_, source.size(), 65536, [&](size_t begin, size_t end) {
       for (size_t f = begin; f < end; ++f)
         source[f] = face_source_[order_.face_old[f]];
     });
     face_source_.swap(source);
   }
-  flags_.assign(n, 0);
-  for (uint32_t v = 0; v < n; ++v)
-    set_refused(v, RejectCount);
+  flags_.assign(n, uint8_t(RejectCount << kRefusedShift)); // refused by nothing yet
   if (opt_.locked) // a locked copy locks the copy standing for it
     for (uint32_t i = 0; i < n; ++i)
       if ((*opt_.locked)[i]) flags_[order_.vertex_new[standing(i)]] |= kFlagLocked;
@@ -268,44 +289,74 @@ void Simplifier::prepare() {
         corner_source_[3 * f + c] =
             3 * face_source_[f] + (reversed.empty() || !reversed[f] || !c ? c : 3 - c);
   }
-  std::vector<uint8_t> kinds;
-  std::vector<Priced> first;
+  UninitVector<uint8_t> kinds;
+  UninitVector<FirstPrice> first;
   first_prices(kinds, first);
   // Several fans at one vertex (fan_split.h): a copy a fan, and the set-up made again in the
   // new numbering (on such meshes only).
   if (split_fans_apart(kinds)) first_prices(kinds, first);
-  for (uint32_t v = 0; v < kinds.size(); ++v) {
-    const VertexKind kind = static_cast<VertexKind>(kinds[v] & ~kKeptOnConstraints);
-    switch (kind) {
-    case VertexKind::Isolated: ++rep_.unreferenced_vertices; continue;
-    case VertexKind::Boundary:
-    case VertexKind::Corner: rep_.kept_boundary += !removable(kind); break;
-    case VertexKind::NonManifold: ++rep_.kept_nonmanifold; break;
-    case VertexKind::HighValence: ++rep_.kept_high_valence; break;
-    case VertexKind::Interior: break;
+  // Counted in blocks on the workers (each vertex writes only its own flags and price), the
+  // blocks' counts added in order.
+  struct Counts {
+    size_t unreferenced = 0, boundary = 0, nonmanifold = 0, high_valence = 0, locked = 0,
+           constrained = 0, vertices = 0;
+    ptrdiff_t flip_refused = 0;
+    std::array<size_t, RejectCount> rejected{};
+  };
+  constexpr size_t kCountBlock = 65536;
+  std::vector<Counts> counts((kinds.size() + kCountBlock - 1) / kCountBlock);
+  for_each_block(&workers_, kinds.size(), kCountBlock, [&](size_t begin, size_t end) {
+    Counts& c = counts[begin / kCountBlock];
+    for (size_t i = begin; i < end; ++i) {
+      const uint32_t v = uint32_t(i);
+      const VertexKind kind = static_cast<VertexKind>(kinds[v] & ~kKeptOnConstraints);
+      switch (kind) {
+      case VertexKind::Isolated: ++c.unreferenced; continue;
+      case VertexKind::Boundary:
+      case VertexKind::Corner: c.boundary += !removable(kind); break;
+      case VertexKind::NonManifold: ++c.nonmanifold; break;
+      case VertexKind::HighValence: ++c.high_valence; break;
+      case VertexKind::Interior: break;
+      }
+      ++c.vertices;
+      if (flags_[v] & kFlagTwin) {
+        ++c.boundary;
+        continue;
+      }
+      if (flags_[v] & kFlagLocked) {
+        ++c.locked;
+        continue;
+      }
+      if (!removable(kind)) continue;
+      if (kinds[v] & kKeptOnConstraints) {
+        ++c.constrained;
+        continue;
+      }
+      const FirstPrice& p = first[v]; // written: v was priced
+      if (p.planned) {                // note(), its counts kept apart
+        c.flip_refused += refuse(v, p.why);
+        if (p.why != RejectCount) ++c.rejected[p.why];
+      }
+      factor_[v] = static_cast<float>(p.priority);
     }
-    ++vertices_;
-    if (flags_[v] & kFlagTwin) {
-      ++rep_.kept_boundary;
-      continue;
-    }
-    if (flags_[v] & kFlagLocked) {
-      ++rep_.kept_locked;
-      continue;
-    }
-    if (!removable(kind)) continue;
-    if (kinds[v] & kKeptOnConstraints) {
-      ++rep_.kept_constrained;
-      continue;
-    }
-    note(v, first[v]);
-    factor_[v] = static_cast<float>(first[v].priority);
+  });
+  for (const Counts& c : counts) {
+    rep_.unreferenced_vertices += c.unreferenced;
+    rep_.kept_boundary += c.boundary;
+    rep_.kept_nonmanifold += c.nonmanifold;
+    rep_.kept_high_valence += c.high_valence;
+    rep_.kept_locked += c.locked;
+    rep_.kept_constrained += c.constrained;
+    vertices_ += c.vertices;
+    flip_refused_ = size_t(ptrdiff_t(flip_refused_) + c.flip_refused);
+    for (int r = 0; r < RejectCount; ++r)
+      rep_.rejected[r] += c.rejected[r];
   }
   rep_.unreferenced_vertices -= welding_.welded; // the welded copies: no face names them now
   // The input's faces, for the relaxed passes' fold-over check (last_resort.cpp), copied once
   // the first prices' scratch is gone (so that the copy does not raise the peak).
-  std::vector<Priced>().swap(first);
-  std::vector<uint8_t>().swap(kinds);
+  UninitVector<FirstPrice>().swap(first);
+  UninitVector<uint8_t>().swap(kinds);
   // Not when the target is asked at any cost (max_price_jump 0): the eased passes then fold
   // where nothing else reaches it, as before. The hierarchy is built when a plan first asks.
   if (opt_.against_input && opt_.relax_to_reach_target && opt_.max_price_jump > 0) {

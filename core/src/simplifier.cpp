@@ -44,19 +44,32 @@ template <class Queue> void Simplifier::run(Queue& queue) {
   IntervalMap map;
   map.n = opt_.intervals;
   map.kind = opt_.mapping;
-  for (size_t v = 0; v < n; ++v)
-    if (std::isfinite(factor_[v])) map.f_max = std::max(map.f_max, double(factor_[v]));
+  const bool by_factor = opt_.target.kind == TargetKind::MaxFactor;
+  // In the input's order, as the paper fills its table: the FIFO of an interval then follows
+  // the input, not space, and removals spread over the mesh. The candidates and the highest
+  // price are found in blocks on the workers (scattered reads: after the parts most vertices
+  // are gone), then pushed in that order on one thread.
+  constexpr size_t kBlock = 65536;
+  std::vector<std::vector<uint32_t>> found((n + kBlock - 1) / kBlock);
+  std::vector<double> highest(found.size(), 0.0);
+  for_each_block(&workers_, n, kBlock, [&](size_t begin, size_t end) {
+    auto& out = found[begin / kBlock];
+    double& f_max = highest[begin / kBlock];
+    for (size_t i = begin; i < end; ++i) {
+      if (std::isfinite(factor_[i])) f_max = std::max(f_max, double(factor_[i]));
+      const uint32_t v = queue_order(i);
+      if (std::isfinite(factor_[v]) && (!by_factor || factor_[v] <= opt_.target.max_factor))
+        out.push_back(v);
+    }
+  });
+  for (double f : highest)
+    map.f_max = std::max(map.f_max, f);
   queue.init(n, map);
   batch_.resize(kBatch);
   batch_ids_.resize(kBatch);
-  const bool by_factor = opt_.target.kind == TargetKind::MaxFactor;
-  // In the input's order, as the paper fills its table: the FIFO of an interval then follows
-  // the input, not space, and removals spread over the mesh.
-  for (uint32_t i = 0; i < n; ++i) {
-    const uint32_t v = queue_order(i);
-    if (std::isfinite(factor_[v]) && (!by_factor || factor_[v] <= opt_.target.max_factor))
+  for (const auto& block : found)
+    for (uint32_t v : block)
       queue.push(v, factor_[v]);
-  }
 
   const size_t queued0 = queue.size();
   const bool counts = opt_.target.kind == TargetKind::Faces ||

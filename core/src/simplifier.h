@@ -96,8 +96,15 @@ class Simplifier {
   void note(uint32_t v, const Priced& p);
   // --- setup.cpp: the set-up from the fans on (normal cones to every vertex's kind and first
   // price); then, where several fans meet at a vertex, a copy a fan (true: set up again).
-  void first_prices(std::vector<uint8_t>& kinds, std::vector<Priced>& first);
-  bool split_fans_apart(const std::vector<uint8_t>& kinds);
+  // A first price, kept only for the vertices priced (their kinds say which): a plain record,
+  // so that the arrays need no fill before the workers write them.
+  struct FirstPrice {
+    double priority;
+    Reject why;
+    bool planned;
+  };
+  void first_prices(UninitVector<uint8_t>& kinds, UninitVector<FirstPrice>& first);
+  bool split_fans_apart(const UninitVector<uint8_t>& kinds);
   // Plans v's removal on its evaluated plane, then on a fallback direction; RejectCount = ok,
   // with the chosen patch's local error in `cost`.
   Reject plan(uint32_t v, const Ring& ring, const Evaluation& e, Patch& patch, double& cost,
@@ -185,7 +192,7 @@ class Simplifier {
   std::vector<uint32_t> committed_; // batch_ entries accounted, to rewrite
   std::vector<Priced> repriced_;
   Planner planner_{eval_, topo_, mesh_.triangles.data(), nullptr, limits_, {}, false};
-  std::vector<float> factor_;
+  UninitVector<float> factor_;
   // Written whole by the workers at the first prices (no serial fill first).
   UninitVector<float> fan_area_; // area of each vertex's faces (kept up to date with lazy_)
   UninitVector<float> normals_;  // unit vertex normals of the input surface, 3 a vertex
@@ -199,7 +206,7 @@ class Simplifier {
   }
   size_t flip_refused_ = 0; // vertices whose last plan a corner's input normal refused
   Reject refused(uint32_t v) const { return Reject((flags_[v] & kRefusedMask) >> kRefusedShift); }
-  std::vector<uint32_t> face_source_;   // per face slot: its input face, or kRemoved once rewritten
+  UninitVector<uint32_t> face_source_;  // per face slot: its input face, or kRemoved once rewritten
   std::vector<uint32_t> corner_source_; // per face slot corner: the input corner it carries
   std::vector<float> face_bound_;       // per face slot: its certified error bound (max_error)
   CarriedPoints carried_;               // removed vertices, by the face standing for them

@@ -6,14 +6,15 @@
 #include <cstdint>
 #include <vector>
 
+#include "uninitialized.h"
 #include "workers.h"
 
 namespace vrs {
 
-struct SpatialOrder {
-  std::vector<uint32_t> vertex_old; // new vertex index -> input index
-  std::vector<uint32_t> vertex_new; // input vertex index -> new index
-  std::vector<uint32_t> face_old;   // new face slot -> input slot
+struct SpatialOrder {                // written whole by the workers (not zero-filled first)
+  UninitVector<uint32_t> vertex_old; // new vertex index -> input index
+  UninitVector<uint32_t> vertex_new; // input vertex index -> new index
+  UninitVector<uint32_t> face_old;   // new face slot -> input slot
 };
 
 // Renumbers `positions` (3 a vertex) and `triangles` in place (same buffers): vertices by the

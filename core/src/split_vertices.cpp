@@ -54,7 +54,7 @@ uint64_t position_hash(const float* p) {
 // (kNone: unreferenced); false when no two share one. A thread a group of positions (by their
 // hash's top bits), each with its own table filled in vertex order: the classes of one pass.
 bool position_classes(const std::vector<uint32_t>& tris, const std::vector<float>& pos,
-                      std::vector<uint32_t>& cls, Workers* workers) {
+                      UninitVector<uint32_t>& cls, Workers* workers) {
   const size_t n = pos.size() / 3;
   const size_t groups = workers ? size_t(workers->threads()) : 1;
   cls.resize(n);
@@ -102,7 +102,7 @@ bool position_classes(const std::vector<uint32_t>& tris, const std::vector<float
 Welding weld_split_vertices(std::vector<uint32_t>& tris, const std::vector<float>& positions,
                             Workers* workers) {
   Welding w;
-  std::vector<uint32_t> cls;
+  UninitVector<uint32_t> cls;
   if (!position_classes(tris, positions, cls, workers)) return w;
   const size_t n = cls.size();
   std::vector<uint32_t> copies(n, 0);

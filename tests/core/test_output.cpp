@@ -14,7 +14,7 @@ struct Case {
   Mesh mesh;
   SpatialOrder order;
   std::vector<uint8_t> removed{0, 0, 1, 0, 0};
-  std::vector<uint32_t> face_source{2, kRemoved, 0};
+  UninitVector<uint32_t> face_source{2, kRemoved, 0};
   std::vector<uint32_t> corner_source{6, 7, 8, 0, 0, 0, 0, 1, 2};
   std::vector<float> face_bound{0.5f, 0.f, 0.25f};
   Case() {
