@@ -67,7 +67,9 @@ bool position_classes(const std::vector<uint32_t>& tris, const std::vector<float
       if (v - lo < hi - lo) cls[v] = v;
   });
   auto group_of = [groups](uint64_t h) { return size_t((h >> 40) % groups); };
-  std::vector<uint8_t> any(groups, 0);
+  // Each group's finds are kept apart and written after: every group reads every vertex's
+  // entry (referenced or not) while the others search.
+  std::vector<std::vector<std::pair<uint32_t, uint32_t>>> same(groups);
   for_each_on(workers, groups, [&](size_t g) {
     size_t members = 0;
     for (uint32_t v = 0; v < n; ++v)
@@ -87,14 +89,20 @@ bool position_classes(const std::vector<uint32_t>& tris, const std::vector<float
           break;
         }
         if (std::memcmp(&pos[3 * size_t(u)], &pos[3 * size_t(v)], 3 * sizeof(float)) == 0) {
-          cls[v] = u;
-          any[g] = 1;
+          same[g].push_back({v, u});
           break;
         }
       }
     }
   });
-  return std::find(any.begin(), any.end(), 1) != any.end();
+  bool any = false;
+  for_each_on(workers, groups, [&](size_t g) {
+    for (const auto& [v, u] : same[g])
+      cls[v] = u;
+  });
+  for (const auto& s : same)
+    any = any || !s.empty();
+  return any;
 }
 
 } // namespace
