@@ -118,15 +118,14 @@ SpatialOrder spatial_order(std::vector<float>& positions, std::vector<uint32_t>&
   });
   // A range of lowest corners a thread, each reading every face: counted, then placed in face
   // order (the order of one pass, whatever the threads).
-  const size_t ranges = workers ? size_t(workers->threads()) : 1;
-  const size_t per = (n + ranges - 1) / std::max<size_t>(ranges, 1);
+  const size_t ranges = range_count(workers);
   auto lowest = [&](size_t f) {
     return std::min({triangles[3 * f], triangles[3 * f + 1], triangles[3 * f + 2]});
   };
   UninitVector<uint32_t> start(n);
   std::vector<size_t> in_range(ranges + 1, 0);
   for_each_on(workers, ranges, [&](size_t r) {
-    const size_t lo = std::min(n, r * per), hi = std::min(n, (r + 1) * per);
+    const auto [lo, hi] = range_of(r, ranges, n);
     std::fill(start.begin() + lo, start.begin() + hi, 0u);
     for (size_t f = 0; f < faces; ++f) {
       const uint32_t v = lowest(f);
@@ -139,7 +138,7 @@ SpatialOrder spatial_order(std::vector<float>& positions, std::vector<uint32_t>&
     in_range[r + 1] += in_range[r];
   order.face_old.resize(faces);
   for_each_on(workers, ranges, [&](size_t r) {
-    const size_t lo = std::min(n, r * per), hi = std::min(n, (r + 1) * per);
+    const auto [lo, hi] = range_of(r, ranges, n);
     uint32_t at = uint32_t(in_range[r]);
     for (size_t v = lo; v < hi; ++v) {
       const uint32_t count = start[v];

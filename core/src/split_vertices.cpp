@@ -56,12 +56,11 @@ uint64_t position_hash(const float* p) {
 bool position_classes(const std::vector<uint32_t>& tris, const std::vector<float>& pos,
                       UninitVector<uint32_t>& cls, Workers* workers) {
   const size_t n = pos.size() / 3;
-  const size_t groups = workers ? size_t(workers->threads()) : 1;
+  const size_t groups = range_count(workers);
   cls.resize(n);
   // Referenced vertices: a range of vertices a thread, each reading every corner.
-  const size_t per = (n + groups - 1) / groups;
   for_each_on(workers, groups, [&](size_t g) {
-    const size_t lo = std::min(n, g * per), hi = std::min(n, (g + 1) * per);
+    const auto [lo, hi] = range_of(g, groups, n);
     std::fill(cls.begin() + lo, cls.begin() + hi, kNone);
     for (uint32_t v : tris)
       if (v - lo < hi - lo) cls[v] = v;
@@ -95,14 +94,11 @@ bool position_classes(const std::vector<uint32_t>& tris, const std::vector<float
       }
     }
   });
-  bool any = false;
   for_each_on(workers, groups, [&](size_t g) {
     for (const auto& [v, u] : same[g])
       cls[v] = u;
   });
-  for (const auto& s : same)
-    any = any || !s.empty();
-  return any;
+  return std::any_of(same.begin(), same.end(), [](const auto& s) { return !s.empty(); });
 }
 
 } // namespace

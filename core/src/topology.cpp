@@ -12,11 +12,8 @@ void Topology::build(const std::vector<uint32_t>& triangles, size_t vertex_count
   // A range of vertices a thread: each reads every corner and writes only its own vertices'
   // counts and lists, in face order (the lists of one pass, whatever the threads). Scattered
   // writes are most of the time; the corners' reading is sequential.
-  const size_t ranges = workers ? size_t(workers->threads()) : 1;
-  const size_t per = (vertex_count + ranges - 1) / std::max<size_t>(ranges, 1);
-  auto range = [&](size_t r) {
-    return std::make_pair(std::min(vertex_count, r * per), std::min(vertex_count, (r + 1) * per));
-  };
+  const size_t ranges = range_count(workers);
+  auto range = [&](size_t r) { return range_of(r, ranges, vertex_count); };
   first_.resize(vertex_count);
   count_.resize(vertex_count);
   capacity_.resize(vertex_count);

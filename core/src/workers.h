@@ -3,12 +3,14 @@
 // computes item i, its result goes to slot i, so the output does not depend on the threads.
 #pragma once
 
+#include <algorithm>
 #include <atomic>
 #include <condition_variable>
 #include <cstddef>
 #include <functional>
 #include <mutex>
 #include <thread>
+#include <utility>
 #include <vector>
 
 namespace vrs {
@@ -59,6 +61,16 @@ void for_each_on(Workers* workers, size_t n, const std::function<void(size_t)>& 
 // with for_each_on: a block is one item.
 void for_each_block(Workers* workers, size_t n, size_t block,
                     const std::function<void(size_t, size_t)>& fn);
+
+// Ranges of [0, n) one a thread (1 without workers), for loops whose threads each read all
+// of an input and write only their own range: range r is [first, second).
+inline size_t range_count(const Workers* workers) {
+  return workers ? size_t(workers->threads()) : 1;
+}
+inline std::pair<size_t, size_t> range_of(size_t r, size_t ranges, size_t n) {
+  const size_t per = (n + ranges - 1) / ranges;
+  return {std::min(n, r * per), std::min(n, (r + 1) * per)};
+}
 
 // The number of threads Options::threads = 0 stands for: the machine's hardware threads.
 int hardware_threads();
