@@ -29,11 +29,12 @@ if [ "${1:-}" != "--no-sanitizers" ]; then
   echo "== the worker threads under ThreadSanitizer"
   cmake -S "$top" -B "$top/build/tsan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVRS_TSAN=ON \
     -DVRS_BUILD_TESTS=ON -DVRS_BUILD_TOOLS=OFF -DVRS_BUILD_PLUGIN=OFF -DVRS_BUILD_BENCH=OFF >/dev/null
-  cmake --build "$top/build/tsan" --target test_threads test_parts test_fan_split test_setup_threads -j "$(nproc)"
+  cmake --build "$top/build/tsan" --target test_threads test_parts test_fan_split test_setup_threads test_bucket_queue -j "$(nproc)"
   TSAN_OPTIONS=halt_on_error=1 "$top/build/tsan/bin/test_threads" --gtest_filter='Workers.*:Threads.*'
   TSAN_OPTIONS=halt_on_error=1 "$top/build/tsan/bin/test_parts"
   TSAN_OPTIONS=halt_on_error=1 "$top/build/tsan/bin/test_fan_split"
   TSAN_OPTIONS=halt_on_error=1 "$top/build/tsan/bin/test_setup_threads"
+  TSAN_OPTIONS=halt_on_error=1 "$top/build/tsan/bin/test_bucket_queue" --gtest_filter='BucketQueue.Fill*'
   echo "== libFuzzer on the core, ${VRS_FUZZ_SECONDS:-120} s"
   VRS_FUZZ_SEED=${VRS_FUZZ_SEED:-1} "$top/scripts/fuzz.sh" "${VRS_FUZZ_SECONDS:-120}"
 fi

@@ -1,13 +1,45 @@
 #include "bucket_queue.h"
 
+#include <utility>
+
 namespace vrs {
 
-void BucketQueue::init(size_t vertex_count, const IntervalMap& map) {
+void BucketQueue::init(size_t vertex_count, const IntervalMap& map, Workers* workers) {
   map_ = map;
-  node_.assign(vertex_count, Node{});
+  fill_on(workers, node_, vertex_count, kOut);
   lists_.assign(map.n, List{});
   nonempty_.assign((map.n + 63) / 64, 0);
   size_ = 0;
+}
+
+void BucketQueue::fill(const std::vector<std::vector<uint32_t>>& blocks, const float* factor,
+                       Workers* workers) {
+  // Each block's vertices counted by interval, then placed: interval i's list is block 0's
+  // vertices of interval i, then block 1's, ... in their order, as pushes in that order.
+  const size_t n = lists_.size();
+  std::vector<std::vector<uint32_t>> at(blocks.size()); // per block: its first slot in each list
+  for_each_on(workers, blocks.size(), [&](size_t b) {
+    at[b].assign(n, 0);
+    for (uint32_t v : blocks[b])
+      ++at[b][map_.interval_of(factor[v])];
+  });
+  for (size_t i = 0; i < n; ++i) {
+    uint32_t slot = 0;
+    for (auto& counts : at)
+      slot += std::exchange(counts[i], slot);
+    lists_[i].entries.resize(slot);
+    lists_[i].live = slot;
+    size_ += slot;
+    if (slot) nonempty_[i >> 6] |= uint64_t(1) << (i & 63);
+  }
+  for_each_on(workers, blocks.size(), [&](size_t b) {
+    for (uint32_t v : blocks[b]) {
+      const int i = map_.interval_of(factor[v]);
+      const uint32_t slot = at[b][i]++;
+      lists_[i].entries[slot] = v;
+      node_[v] = {uint32_t(i), slot};
+    }
+  });
 }
 
 void BucketQueue::link_back(uint32_t v, int interval) {
@@ -29,7 +61,7 @@ void BucketQueue::erase(uint32_t v) {
   if (i == kNone) return;
   List& l = lists_[i];
   l.entries[node_[v].slot] = kNone;
-  node_[v] = Node{};
+  node_[v] = kOut;
   --size_;
   if (--l.live == 0) {
     l.entries.clear(); // the capacity stays: no allocation in the steady state

@@ -11,12 +11,19 @@
 
 #include "interval_map.h"
 #include "topology.h"
+#include "uninitialized.h"
 
 namespace vrs {
 
 class BucketQueue {
  public:
-  void init(size_t vertex_count, const IntervalMap& map);
+  // Empty, for vertices [0, vertex_count); the table is cleared on the workers when given.
+  void init(size_t vertex_count, const IntervalMap& map, Workers* workers = nullptr);
+  // On an empty queue: every vertex of `blocks` pushed at `factor[v]`, as push() one by one in
+  // block order would, with the intervals found and the lists written on the workers (the
+  // whole queue's first fill was a serial pass over scattered vertices).
+  void fill(const std::vector<std::vector<uint32_t>>& blocks, const float* factor,
+            Workers* workers);
 
   // Appends v at the end of the interval of `factor` (re-evaluated vertices go to the back:
   // this spreads removals over the mesh instead of eating one region).
@@ -59,17 +66,18 @@ class BucketQueue {
   void link_back(uint32_t v, int interval);
 
   IntervalMap map_;
-  struct Node {
-    uint32_t where = kNone; // its interval
-    uint32_t slot = kNone;  // its entry in that interval's list
+  struct Node { // no member initializers: the table is written whole on the workers
+    uint32_t where; // its interval, kNone when not queued
+    uint32_t slot;  // its entry in that interval's list
   };
+  static constexpr Node kOut{kNone, kNone};
   struct List {
     std::vector<uint32_t> entries; // vertices in the order appended; kNone: erased
     uint32_t head = 0;             // the first vertex (entries before it are blank)
     uint32_t live = 0;
   };
   void compact(List& l);
-  std::vector<Node> node_;
+  UninitVector<Node> node_;
   std::vector<List> lists_;
   std::vector<uint64_t> nonempty_; // bit i: interval i has vertices
   size_t size_ = 0;

@@ -2,7 +2,7 @@
 
 namespace vrs {
 
-void HeapQueue::init(size_t vertex_count, const IntervalMap& map) {
+void HeapQueue::init(size_t vertex_count, const IntervalMap& map, Workers*) {
   map_ = map;
   heap_.clear();
   heap_.reserve(vertex_count);

@@ -7,12 +7,19 @@
 
 #include "interval_map.h"
 #include "topology.h"
+#include "workers.h"
 
 namespace vrs {
 
 class HeapQueue {
  public:
-  void init(size_t vertex_count, const IntervalMap& map);
+  void init(size_t vertex_count, const IntervalMap& map, Workers* = nullptr);
+  // Pushes each vertex of `blocks` in block order (one heap: no parallel fill).
+  void fill(const std::vector<std::vector<uint32_t>>& blocks, const float* factor, Workers*) {
+    for (const auto& block : blocks)
+      for (uint32_t v : block)
+        push(v, factor[v]);
+  }
   void push(uint32_t v, double factor);
   void erase(uint32_t v);
   void update(uint32_t v, double factor) { push(v, factor); }

@@ -48,7 +48,7 @@ template <class Queue> void Simplifier::run(Queue& queue) {
   // In the input's order, as the paper fills its table: the FIFO of an interval then follows
   // the input, not space, and removals spread over the mesh. The candidates and the highest
   // price are found in blocks on the workers (scattered reads: after the parts most vertices
-  // are gone), then pushed in that order on one thread.
+  // are gone), then placed in the table in that order, also on the workers.
   constexpr size_t kBlock = 65536;
   std::vector<std::vector<uint32_t>> found((n + kBlock - 1) / kBlock);
   std::vector<double> highest(found.size(), 0.0);
@@ -64,12 +64,10 @@ template <class Queue> void Simplifier::run(Queue& queue) {
   });
   for (double f : highest)
     map.f_max = std::max(map.f_max, f);
-  queue.init(n, map);
+  queue.init(n, map, &workers_);
   batch_.resize(kBatch);
   batch_ids_.resize(kBatch);
-  for (const auto& block : found)
-    for (uint32_t v : block)
-      queue.push(v, factor_[v]);
+  queue.fill(found, factor_.data(), &workers_);
 
   const size_t queued0 = queue.size();
   const bool counts = opt_.target.kind == TargetKind::Faces ||

@@ -6,6 +6,7 @@
 
 #include "bucket_queue.h"
 #include "heap_queue.h"
+#include "workers.h"
 
 using namespace vrs;
 
@@ -168,6 +169,53 @@ TEST(BucketQueue, MatchesFifoListsThroughChurnThatBlanksAndCompactsItsArrays) {
     if (!expected.empty()) {
       ASSERT_EQ(q.front(), expected[0]) << step;
     }
+  }
+}
+
+TEST(BucketQueue, FillIsPushesInBlockOrderOnAnyThreads) {
+  // Blocks of uneven sizes (some empty), vertices in no order, factors over 130 intervals (three
+  // bitmap words), some at 0 and past the range: the table filled on the workers must be the
+  // one the pushes make, slots included (the erases of a churn read them), on any threads.
+  std::mt19937 rng(5);
+  const uint32_t n = 20000;
+  std::vector<uint32_t> vertices(n);
+  for (uint32_t v = 0; v < n; ++v)
+    vertices[v] = v;
+  std::shuffle(vertices.begin(), vertices.end(), rng);
+  std::vector<std::vector<uint32_t>> blocks(23);
+  for (uint32_t v : vertices)
+    if (rng() % 5) blocks[rng() % 3 == 0 ? 0 : rng() % blocks.size()].push_back(v);
+  blocks[7].clear();
+  std::vector<float> factor(n);
+  for (auto& f : factor)
+    f = rng() % 50 == 0 ? 0.0f : float(std::uniform_real_distribution<double>(0, 1.1)(rng));
+  for (int threads : {1, 2, 3, 8}) {
+    BucketQueue pushed, filled;
+    pushed.init(n, linear(130, 1.0));
+    for (const auto& block : blocks)
+      for (uint32_t v : block)
+        pushed.push(v, factor[v]);
+    Workers workers(threads);
+    filled.init(n, linear(130, 1.0), &workers);
+    filled.fill(blocks, factor.data(), &workers);
+    ASSERT_EQ(filled.size(), pushed.size()) << threads;
+    for (uint32_t v = 0; v < n; ++v) {
+      ASSERT_EQ(filled.contains(v), pushed.contains(v)) << threads;
+      if (pushed.contains(v)) {
+        ASSERT_EQ(filled.interval(v), pushed.interval(v)) << threads;
+      }
+    }
+    std::mt19937 churn(threads);
+    for (int step = 0; step < 30000; ++step) {
+      const uint32_t v = churn() % n;
+      if (churn() % 2) {
+        pushed.erase(v), filled.erase(v);
+      } else {
+        const double f = std::uniform_real_distribution<double>(0, 1)(churn);
+        pushed.update(v, f), filled.update(v, f);
+      }
+    }
+    ASSERT_EQ(drain(filled), drain(pushed)) << threads;
   }
 }
 
