@@ -32,6 +32,7 @@ def rows(path):  # (percent, function name without arguments)
         m = re.match(r"\s+([\d.]+)%\s+(?:([\d.]+)%\s+)?\[\.\]\s+(.*?)\s*$", line)
         if m:
             sym = re.split(r"\s{2,}", m.group(3))[0]
+            sym = sym.replace("(anonymous namespace)", "anon")  # not an argument list
             yield float(m.group(1)), re.sub(r"\(.*", "", sym)
 steps = [  # (label, name prefix): the driver's steps, then the planning's pieces
     ("setup: classify and first prices (`Simplifier::prepare`)", "vrs::Simplifier::prepare"),

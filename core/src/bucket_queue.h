@@ -66,7 +66,7 @@ class BucketQueue {
   void link_back(uint32_t v, int interval);
 
   IntervalMap map_;
-  struct Node { // no member initializers: the table is written whole on the workers
+  struct Node {     // no member initializers: the table is written whole on the workers
     uint32_t where; // its interval, kNone when not queued
     uint32_t slot;  // its entry in that interval's list
   };
