@@ -41,7 +41,8 @@ def main(src, dst):
         "",
         f"Measured {datetime.date.today()} on {machine()} by `scripts/bench_speed.sh` "
         "(data: `bench/speed.csv`). At 10 % of the input faces; each method a child process "
-        "of `vrs_bench`, ours, ours on 2 threads (`ours-t2`) and meshoptimizer alternated, "
+        "of `vrs_bench`, ours, ours on 2 threads (`ours-t2`) and meshoptimizer alternated "
+        "(each repeat in another of their orders), "
         "medians of their runs (n = runs each); QECD (MeshLab's Quadric Edge Collapse, "
         "dialog defaults) once. Time is the simplification call; memory the process's "
         "resident high-water mark.",
