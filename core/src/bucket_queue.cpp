@@ -18,10 +18,12 @@ void BucketQueue::fill(const std::vector<std::vector<uint32_t>>& blocks, const f
   // vertices of interval i, then block 1's, ... in their order, as pushes in that order.
   const size_t n = lists_.size();
   std::vector<std::vector<uint32_t>> at(blocks.size()); // per block: its first slot in each list
+  std::vector<std::vector<uint32_t>> interval(blocks.size()); // per block: each vertex's
   for_each_on(workers, blocks.size(), [&](size_t b) {
     at[b].assign(n, 0);
-    for (uint32_t v : blocks[b])
-      ++at[b][map_.interval_of(factor[v])];
+    interval[b].resize(blocks[b].size());
+    for (size_t j = 0; j < blocks[b].size(); ++j)
+      ++at[b][interval[b][j] = uint32_t(map_.interval_of(factor[blocks[b][j]]))];
   });
   for (size_t i = 0; i < n; ++i) {
     uint32_t slot = 0;
@@ -33,11 +35,10 @@ void BucketQueue::fill(const std::vector<std::vector<uint32_t>>& blocks, const f
     if (slot) nonempty_[i >> 6] |= uint64_t(1) << (i & 63);
   }
   for_each_on(workers, blocks.size(), [&](size_t b) {
-    for (uint32_t v : blocks[b]) {
-      const int i = map_.interval_of(factor[v]);
-      const uint32_t slot = at[b][i]++;
+    for (size_t j = 0; j < blocks[b].size(); ++j) {
+      const uint32_t v = blocks[b][j], i = interval[b][j], slot = at[b][i]++;
       lists_[i].entries[slot] = v;
-      node_[v] = {uint32_t(i), slot};
+      node_[v] = {i, slot};
     }
   });
 }
