@@ -35,6 +35,8 @@ template <class Queue> bool Simplifier::relax(Queue& queue, bool after_jump) {
   // measured from the removals before the easing.
   if (relax_steps_ == 0) relaxed_from_ = rep_.max_removed_factor;
   do {
+    // Only where the input is kept to judge them (not when the target is asked at any cost).
+    limits_.folds_judged_by_input = input_.kept();
     if (relax_steps_++ == 0 && limits_.agreeing_corners > 2) {
       limits_.agreeing_corners = 2;
     } else {

@@ -75,6 +75,7 @@ Reject veto_triangle(const Ring& ring, const Patch& patch, std::array<uint8_t, 3
     if (doubts && sn[3] > kCreaseSpreadSin) *doubts |= kCornerOnCrease;
   }
   if (agreeing < limits.agreeing_corners) return RejectFlip;
+  if (limits.folds_judged_by_input) return RejectCount;
   // The faces it replaces: the old face on each of its ring edges; a triangle made of
   // diagonals only answers to the old faces at its corners.
   bool on_ring_edge = false;

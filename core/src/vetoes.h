@@ -29,6 +29,12 @@ struct RemovalLimits {
   // refused: the triangulation of the ring whose triangles stand nearest the old fan, of those
   // no veto refuses triangle by triangle.
   bool least_cost_filling = false;
+  // In the eased passes the input's nearest faces judge every new triangle (InputSurface::folds,
+  // the fold-over as the benchmark measures it); the faces a patch replaces then no longer
+  // refuse it for turning over them. By then they can be slivers whose normals stand for
+  // nothing: a thread's groove wall, under a ridge leaning over the core, refused every filling
+  // of the ridge's vertices, and the threaded parts stopped at twice their target.
+  bool folds_judged_by_input = false;
   // With an error bound tracked (Options::max_error): no new face's certified bound above it.
   double max_error = std::numeric_limits<double>::infinity();
 };

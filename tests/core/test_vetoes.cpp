@@ -43,11 +43,25 @@ TEST(Vetoes, FoldOverRefusesAFanTurnedOverTheFaceItReplaces) {
   ASSERT_TRUE(fill_candidate(s.ring, OpenRing::Border, 1 + 3, p));
   EXPECT_EQ(veto_shape(s.ring, p, replaced(s, p, eval), s.normals.data(), limits, false),
             RejectCount);
+  // In the eased passes the input judges fold-overs (InputSurface::folds), not the faces
+  // replaced: the turned-over fans pass here and are refused (or not) by the input.
+  limits.folds_judged_by_input = true;
+  for (int apex : {2, 4}) {
+    ASSERT_TRUE(fill_candidate(s.ring, OpenRing::Border, 1 + apex, p));
+    EXPECT_EQ(veto_shape(s.ring, p, replaced(s, p, eval), s.normals.data(), limits, false),
+              RejectCount)
+        << "apex " << apex;
+  }
+  limits.folds_judged_by_input = false;
   // With the input normals all up and their veto on, the same fan is refused by it first.
   for (size_t i = 0; i < s.normals.size(); i += 4)
     s.normals[i + 2] = 1.0f;
   limits.agreeing_corners = 3;
   ASSERT_TRUE(fill_candidate(s.ring, OpenRing::Border, 1 + 2, p));
+  EXPECT_EQ(veto_shape(s.ring, p, replaced(s, p, eval), s.normals.data(), limits, false),
+            RejectFlip);
+  // The corners' test still holds when the input judges fold-overs.
+  limits.folds_judged_by_input = true;
   EXPECT_EQ(veto_shape(s.ring, p, replaced(s, p, eval), s.normals.data(), limits, false),
             RejectFlip);
 }
