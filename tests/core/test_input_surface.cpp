@@ -28,6 +28,18 @@ vrs::Evaluator evaluator(const vrs::Mesh& m) {
   return vrs::Evaluator(vrs::Mode::Surface3D, {0, 0, 1}, m.positions.data());
 }
 
+// A run of `in` to `ratio` of its faces with the default options, into `out`.
+struct RatioRun {
+  vrs::Mesh out;
+  vrs::Options options;
+  vrs::Report report;
+  RatioRun(const vrs::Mesh& in, double ratio) : out(in) {
+    options.target.kind = vrs::TargetKind::Ratio;
+    options.target.ratio = ratio;
+    report = vrs::simplify(out, options);
+  }
+};
+
 TEST(InputSurface, NearestFaceIsTheOneABruteForceSearchFinds) {
   for (const vrs::Mesh& m :
        {vrs_test::icosphere(3), vrs_test::plate_with_holes(7, 5, {{2, 2}, {4, 2}}, 0.3f, 2)}) {
@@ -93,14 +105,10 @@ TEST(InputSurface, CoarseRunsDoNotTurnFacesAgainstTheInputNearestThem) {
     const std::string path = vrs_test::cgal_mesh(name);
     if (path.empty()) GTEST_SKIP() << "CGAL's data set is missing";
     const vrs::Mesh in = vrs_test::read_off(path);
-    vrs::Mesh out = in;
-    vrs::Options o;
-    o.target.kind = vrs::TargetKind::Ratio;
-    o.target.ratio = 0.01;
-    const vrs::Report r = vrs::simplify(out, o);
-    ASSERT_TRUE(r.ok) << name << ": " << r.message;
-    EXPECT_EQ(vrs_test::count_faces_against_nearest_input(in, out), 0u) << name;
-    EXPECT_EQ(vrs_test::check_run(in, out, o, r), "") << name;
+    const RatioRun run(in, 0.01);
+    ASSERT_TRUE(run.report.ok) << name << ": " << run.report.message;
+    EXPECT_EQ(vrs_test::count_faces_against_nearest_input(in, run.out), 0u) << name;
+    EXPECT_EQ(vrs_test::check_run(in, run.out, run.options, run.report), "") << name;
   }
 }
 
@@ -163,17 +171,14 @@ TEST(InputSurface, AHugeTriangleOverTinyFacesIsSampledOnTheLargestGrid) {
 TEST(InputSurface, PlateWithSlotsStopsCleanInsteadOfCrumpling) {
   const vrs::Mesh in = vrs_test::read_off(VRS_MESHES "/plate-slots.off");
   ASSERT_EQ(in.face_count(), 860u);
-  vrs::Mesh out = in;
-  vrs::Options o;
-  o.target.kind = vrs::TargetKind::Ratio;
-  o.target.ratio = 0.01;
-  const vrs::Report r = vrs::simplify(out, o);
+  const RatioRun run(in, 0.01);
+  const vrs::Report& r = run.report;
   ASSERT_TRUE(r.ok) << r.message;
   EXPECT_FALSE(r.target_reached);
   EXPECT_NE(r.stop_detail.find("fold"), std::string::npos) << r.stop_detail;
-  EXPECT_LT(out.face_count(), 60u);
-  EXPECT_EQ(vrs_test::count_faces_against_nearest_input(in, out), 0u);
-  EXPECT_EQ(vrs_test::check_run(in, out, o, r), "");
+  EXPECT_LT(run.out.face_count(), 60u);
+  EXPECT_EQ(vrs_test::count_faces_against_nearest_input(in, run.out), 0u);
+  EXPECT_EQ(vrs_test::check_run(in, run.out, run.options, r), "");
 }
 
 // Asked at any cost (max_price_jump 0), the same plate goes further, as it did: the eased
@@ -204,32 +209,26 @@ TEST(InputSurface, AtAnyCostThePlateGoesFurther) {
 TEST(InputSurface, ThreadReachesItsTargetJudgedByTheInput) {
   const vrs::Mesh in = vrs_test::read_off(VRS_MESHES "/threaded-short.off");
   ASSERT_EQ(in.face_count(), 2424u);
-  vrs::Mesh out = in;
-  vrs::Options o;
-  o.target.kind = vrs::TargetKind::Ratio;
-  o.target.ratio = 0.1;
-  const vrs::Report r = vrs::simplify(out, o);
+  const RatioRun run(in, 0.1);
+  const vrs::Report& r = run.report;
   ASSERT_TRUE(r.ok) << r.message;
-  EXPECT_TRUE(r.target_reached) << out.face_count() << " faces: " << r.stop_detail;
+  EXPECT_TRUE(r.target_reached) << run.out.face_count() << " faces: " << r.stop_detail;
   EXPECT_GT(r.relaxed_removals, 0u); // the eased passes are what this is about
-  EXPECT_EQ(vrs_test::count_fold_overs(in, out, r), 0u);
-  EXPECT_EQ(vrs_test::check_run(in, out, o, r), "");
+  EXPECT_EQ(vrs_test::count_fold_overs(in, run.out, r), 0u);
+  EXPECT_EQ(vrs_test::check_run(in, run.out, run.options, r), "");
 }
 
 // A thin plate with three tunnels on a grid tessellation: the same, from the generator.
 TEST(InputSurface, ThinPlateWithTunnelsStopsWithEveryFaceOnItsSide) {
   const vrs::Mesh in =
       vrs_test::plate_with_holes(17, 5, {{2, 2}, {4, 2}, {6, 2}, {8, 2}}, 0.05f, 6);
-  vrs::Mesh out = in;
-  vrs::Options o;
-  o.target.kind = vrs::TargetKind::Ratio;
-  o.target.ratio = 0.01;
-  const vrs::Report r = vrs::simplify(out, o);
+  const RatioRun run(in, 0.01);
+  const vrs::Report& r = run.report;
   ASSERT_TRUE(r.ok) << r.message;
   EXPECT_FALSE(r.target_reached);
   EXPECT_FALSE(r.stop_detail.empty());
-  EXPECT_EQ(vrs_test::count_faces_against_nearest_input(in, out), 0u);
-  EXPECT_EQ(vrs_test::check_run(in, out, o, r), "");
+  EXPECT_EQ(vrs_test::count_faces_against_nearest_input(in, run.out), 0u);
+  EXPECT_EQ(vrs_test::check_run(in, run.out, run.options, r), "");
 }
 
 } // namespace
