@@ -34,9 +34,11 @@ template <class Queue> bool Simplifier::relax(Queue& queue, bool after_jump) {
   // with 16 tunnels stops clean at 268 faces instead of crumpling to 154); the price of a jump is
   // measured from the removals before the easing.
   if (relax_steps_ == 0) relaxed_from_ = rep_.max_removed_factor;
+  // One switch for both sides: the input judges every new triangle (removal.cpp), the faces
+  // replaced no longer do (vetoes.cpp). Only where the input is kept: not when the target is
+  // asked at any cost.
+  limits_.folds_judged_by_input = input_.kept();
   do {
-    // Only where the input is kept to judge them (not when the target is asked at any cost).
-    limits_.folds_judged_by_input = input_.kept();
     if (relax_steps_++ == 0 && limits_.agreeing_corners > 2) {
       limits_.agreeing_corners = 2;
     } else {

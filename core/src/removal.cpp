@@ -107,7 +107,7 @@ Reject Planner::plan(uint32_t v, const Ring& ring, Vec3 n, Patch& out, double& c
     // gated at 18 degrees bunny00 x2 asked 478 times and was refused nothing; ungated, 2-4x
     // the time), and the tuning set folds as little as at 18 degrees (bench/ablation.md).
     if (why == RejectCount && check_topology && input_) {
-      const bool eased = limits_->agreeing_corners < 3;
+      const bool eased = limits_->folds_judged_by_input; // the vetoes eased, the input kept
       if ((eased || out.corner_doubts) &&
           (eased ? input_->folds(out, *eval_)
                  : input_->folds(out, *eval_, kInputCheckCovers, kInputCheckSide)))
