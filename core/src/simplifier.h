@@ -170,13 +170,21 @@ class Simplifier {
   // to the next and ate a bolt's head into a cone (price 0.6 before, 224 at the end).
   double relaxed_from_ = 0;
   double jump_base() const { return relax_steps_ > 0 ? relaxed_from_ : rep_.max_removed_factor; }
+  // Once eased, half the jump: at the whole of it the eased passes' last removals flattened
+  // steps and thin walls that no veto sees (boeing at 10 %: mean error 0.0009 -> 0.0016 for the
+  // last 40 faces). On the tuning set, runs off target 85 -> 88 of 342, every error figure
+  // better (max-error gmean 0.515 -> 0.494, CAD p90 2.57 -> 2.40); a third off: 92 off target.
+  static constexpr double kEasedJumpShare = 0.5;
+  double jump_bar() const {
+    return opt_.max_price_jump * (relax_steps_ > 0 ? kEasedJumpShare : 1.0);
+  }
   // Whether removing v at `price` would be such a jump (with a count target).
   // Not before 16 removals (a few are no history to jump from), nor under an error bound (it
   // says itself how far a removal may go).
   bool jumps(double price) const {
     return opt_.max_price_jump > 0 && opt_.priority == Priority::LocalError && rep_.removed >= 16 &&
            !(opt_.max_error > 0 && std::isfinite(opt_.max_error)) &&
-           price > opt_.max_price_jump * std::max(jump_base(), jump_floor_);
+           price > jump_bar() * std::max(jump_base(), jump_floor_);
   }
   bool simplify_boundary_ = opt_.simplify_boundary; // or on when the kept border needs it
   // Queued neighbours of a removal are re-priced when popped. The paper's factor is the plane

@@ -48,15 +48,15 @@ std::string explain_remaining(const Remaining& r, bool simplify_boundary, bool l
 
 std::string Simplifier::explain_stop() const {
   if (jump_price_ > 0) {
-    char why[400];
+    char why[512];
     std::snprintf(why, sizeof why,
                   "stopped short of the target: the cheapest removal left costs %.3g, %.0f times "
                   "the dearest made %s (%.3g); the surface would change abruptly (a part "
                   "dropped, a tunnel pressed flat, a thin wall crossed) rather than lose detail "
-                  "(max_price_jump %g; 0 reaches the target at any cost)",
+                  "(max_price_jump %g%s; 0 reaches the target at any cost)",
                   jump_price_, jump_price_ / std::max(jump_from_, jump_floor_),
                   relax_steps_ > 0 ? "before the vetoes were eased" : "so far", jump_from_,
-                  opt_.max_price_jump);
+                  opt_.max_price_jump, relax_steps_ > 0 ? ", half of it once eased" : "");
     return why;
   }
   Remaining r;

@@ -153,7 +153,8 @@ def simplify(mesh_vertices, mesh_faces, /, *, ratio: Optional[float] = None,
     alone would take more than a quarter of the faces asked for: report["boundary_simplified"]).
     keep_boundary: keep every border vertex whatever the target (the paper's rule).
     max_jump: stop short of a count target rather than take a removal costing this many times
-    the dearest one so far (a part dropped, a tunnel pressed flat); 0: the target at any cost.
+    the dearest one so far (a part dropped, a tunnel pressed flat), half as many once the
+    vetoes are eased; 0: the target at any cost.
     feature_angle: keep edges whose faces turn more than this many degrees apart (0: off).
     seams: (s, 2) vertex pairs kept as polylines (texture seams, material borders).
     locked: boolean mask, one entry per vertex: those vertices stay.

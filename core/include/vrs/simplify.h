@@ -154,9 +154,9 @@ struct Options {
   // pressed flat) rather than lose detail. Then a new triangle may first face away from the
   // input's normal at one of its three corners (until then at none); at the next such jump the
   // run stops short (StopReason::NoCandidates, stop_detail says so). Once eased, removals are
-  // measured from the dearest one made before. 0: the target at any cost (the eased passes
-  // may then fold over the input where nothing else reaches it). Not with a finite max_error:
-  // the bound says how far a removal may go.
+  // measured from the dearest one made before, against half this many times. 0: the target at
+  // any cost (the eased passes may then fold over the input where nothing else reaches it).
+  // Not with a finite max_error: the bound says how far a removal may go.
   double max_price_jump = 10.0;
   // Threads to plan removals on (0: the machine's hardware threads). The output is the same
   // whatever the number: independent removals are planned together, committed in queue order.
