@@ -173,7 +173,7 @@ class Simplifier {
   // Once eased, half the jump: at the whole of it the eased passes' last removals flattened
   // steps and thin walls that no veto sees (boeing at 10 %: mean error 0.0009 -> 0.0016 for the
   // last 40 faces). On the tuning set, runs off target 85 -> 88 of 342, every error figure
-  // better (max-error gmean 0.515 -> 0.494, CAD p90 2.57 -> 2.40); a third off: 92 off target.
+  // better (max-error gmean 0.515 -> 0.494, CAD p90 2.57 -> 2.40); at 0.4, 92 off target.
   static constexpr double kEasedJumpShare = 0.5;
   double jump_bar() const {
     return opt_.max_price_jump * (relax_steps_ > 0 ? kEasedJumpShare : 1.0);

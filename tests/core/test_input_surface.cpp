@@ -222,7 +222,7 @@ TEST(InputSurface, ThreadReachesItsTargetJudgedByTheInput) {
 
 // Once eased, half the jump: the same rod at 1 % stops short with every removal within half
 // the jump over the dearest made before the easing, as stop_detail says (at the whole jump its
-// last removals cost ten times that, flattening the thread's flanks where no veto sees it).
+// last removals cost ten times that).
 TEST(InputSurface, EasedRemovalsStayWithinHalfTheJump) {
   const vrs::Mesh in = vrs_test::read_off(VRS_MESHES "/threaded-short.off");
   const RatioRun run(in, 0.01);
