@@ -39,7 +39,7 @@ template <class Queue> void Simplifier::account(const Planned& p, Queue& queue) 
   faces_ -= static_cast<size_t>(ring.faces - p.patch.count);
   --vertices_;
   ++rep_.removed;
-  rep_.relaxed_removals += relax_steps_ > 0;
+  rep_.relaxed_removals += eased();
   rep_.max_removed_factor = std::max(rep_.max_removed_factor, double(factor_[v]));
   touch_ring(p, queue, reprice_, nullptr);
 }

@@ -6,7 +6,7 @@ namespace vrs {
 
 template <class Queue> bool Simplifier::relax(Queue& queue, bool after_jump) {
   // A jump is met once by letting one corner disagree; the last resort is for a queue run dry.
-  if (last_resort_ || (after_jump && relax_steps_ > 0)) return false;
+  if (last_resort_ || (after_jump && eased())) return false;
   // Nothing to gain when the kept border alone needs more than the target: on the input's
   // surface (Euler, manifold), any triangulation keeping its B border vertices has at least
   // 2B - 2V + F faces. Lifting vetoes there would only crumple the interior.

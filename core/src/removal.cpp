@@ -85,8 +85,9 @@ Reject Planner::plan(uint32_t v, const Ring& ring, Vec3 n, Patch& out, double& c
   for (int i = 1; i < m; ++i)
     for (int j = i; j > 0 && estimate[order[j]] < estimate[order[j - 1]]; --j)
       std::swap(order[j], order[j - 1]);
+  // Once the input judges fold-overs, the shape veto no longer reads the faces replaced.
   FaceNormals replaced;
-  replaced_face_normals(v, ring, out, *eval_, replaced);
+  if (!limits_->folds_judged_by_input) replaced_face_normals(v, ring, out, *eval_, replaced);
   auto vetoed = [&](bool plane_angle) {
     // Topology first (it cannot change with the projection), then shape.
     Reject why = check_topology ? veto_topology(ring, out, open, *topo_, tris_) : RejectCount;

@@ -162,6 +162,7 @@ class Simplifier {
   RemovalLimits limits_;
   bool last_resort_ = false; // see relax()
   int relax_steps_ = 0;      // relax() calls so far: 1 lets one corner disagree, 2 the rest
+  bool eased() const { return relax_steps_ > 0; }
   // Options::max_price_jump: the least price a jump is measured from (1e-3 of the diagonal),
   // and, once the run stopped at one, the price and the removal it was measured from.
   double jump_floor_ = 0, jump_price_ = 0, jump_from_ = 0;
@@ -169,15 +170,13 @@ class Simplifier {
   // Measured from the dearest so far, a relaxed run climbed by small steps from one removal
   // to the next and ate a bolt's head into a cone (price 0.6 before, 224 at the end).
   double relaxed_from_ = 0;
-  double jump_base() const { return relax_steps_ > 0 ? relaxed_from_ : rep_.max_removed_factor; }
+  double jump_base() const { return eased() ? relaxed_from_ : rep_.max_removed_factor; }
   // Once eased, half the jump: at the whole of it the eased passes' last removals flattened
   // steps and thin walls that no veto sees (boeing at 10 %: mean error 0.0009 -> 0.0016 for the
   // last 40 faces). On the tuning set, runs off target 85 -> 88 of 342, every error figure
   // better (max-error gmean 0.515 -> 0.494, CAD p90 2.57 -> 2.40); at 0.4, 92 off target.
   static constexpr double kEasedJumpShare = 0.5;
-  double jump_bar() const {
-    return opt_.max_price_jump * (relax_steps_ > 0 ? kEasedJumpShare : 1.0);
-  }
+  double jump_bar() const { return opt_.max_price_jump * (eased() ? kEasedJumpShare : 1.0); }
   // Whether removing v at `price` would be such a jump (with a count target).
   // Not before 16 removals (a few are no history to jump from), nor under an error bound (it
   // says itself how far a removal may go).

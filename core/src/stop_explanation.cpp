@@ -55,8 +55,8 @@ std::string Simplifier::explain_stop() const {
                   "dropped, a tunnel pressed flat, a thin wall crossed) rather than lose detail "
                   "(max_price_jump %g%s; 0 reaches the target at any cost)",
                   jump_price_, jump_price_ / std::max(jump_from_, jump_floor_),
-                  relax_steps_ > 0 ? "before the vetoes were eased" : "so far", jump_from_,
-                  opt_.max_price_jump, relax_steps_ > 0 ? ", half of it once eased" : "");
+                  eased() ? "before the vetoes were eased" : "so far", jump_from_,
+                  opt_.max_price_jump, eased() ? ", half of it once eased" : "");
     return why;
   }
   Remaining r;

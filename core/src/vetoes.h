@@ -50,7 +50,8 @@ Reject veto_topology(const Ring& ring, const Patch& patch, OpenRing open, const 
 // `plane_angle` (fillings made on the projection plane), none steeper than limits.min_normal_cos
 // to that plane.
 // `replaced`: the unit normals of the ring's faces (replaced_face_normals), the same for every
-// candidate of one plan, so made once.
+// candidate of one plan, so made once; not read (and left unmade) once
+// limits.folds_judged_by_input.
 // `doubts` (when given, of a patch no veto refuses): the CornerDoubt bits of corners that cannot
 // vouch for their triangle, their normal more than 45 degrees from it or their faces spreading
 // more than 30 degrees about them (a crease, a rim, a thin wall): there the planner asks the
