@@ -129,11 +129,10 @@ double dot(V3 a, V3 b) {
   return a.x * b.x + a.y * b.y + a.z * b.z;
 }
 
-// Output faces (all, or only those the re-triangulation made) whose normal opposes the input's
-// vertex normals at their corners: dot < -tolerance * |face normal| * |normal sum|.
-size_t flipped_faces(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Report& r, bool new_only,
-                     double tolerance) {
-  // Unit face normals summed, as the core's vertex normals.
+// Per vertex of `in`: its faces' unit normals summed, as the core's vertex normals; none where
+// fans only touch (each is a surface of its own, judged by its own normal: fan_split.h), as
+// where faces cancel.
+std::vector<V3> vertex_normals(const vrs::Mesh& in) {
   std::vector<V3> normal(in.vertex_count(), V3{0, 0, 0});
   for (size_t i = 0; i < in.triangles.size(); i += 3) {
     V3 x = cross(sub(pos(in, in.triangles[i + 1]), pos(in, in.triangles[i])),
@@ -145,11 +144,49 @@ size_t flipped_faces(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Repor
       n = {n.x + x.x / l, n.y + x.y / l, n.z + x.z / l};
     }
   }
-  // Where fans only touch, each is a surface of its own (the core judges each by its own
-  // normal, fan_split.h): no one normal there, as where faces cancel.
   const std::vector<uint8_t> pinched = pinches(in);
   for (size_t v = 0; v < pinched.size(); ++v)
     if (pinched[v]) normal[v] = V3{0, 0, 0};
+  return normal;
+}
+
+// Pieces of other orientations welded (`apart`: the input unwelded, each piece turned to agree
+// within itself, as the output holds it; `rep`: the welding): the core judges a corner on the
+// welded surface, turned to agree, by every face the weld joins at it (a face of the piece
+// across a seam included), and gives the orientation back on output. So: the welded surface's
+// normal, in the orientation of the copy's own faces; none where those disagree (a copy on the
+// kept line between a turned piece and another).
+std::vector<V3> welded_vertex_normals(const vrs::Mesh& apart, const std::vector<uint32_t>& rep) {
+  vrs::Mesh welded = apart;
+  for (uint32_t& v : welded.triangles)
+    v = rep[v];
+  vrs::Mesh run = welded;
+  orient_coherently(run);
+  const std::vector<V3> at_rep = vertex_normals(run);
+  std::vector<V3> normal(apart.vertex_count(), V3{0, 0, 0});
+  std::vector<int> turned(apart.vertex_count(), 0); // 1 kept, -1 turned, 2 both
+  for (size_t f = 0; f < apart.face_count(); ++f) {
+    const int t =
+        std::equal(&run.triangles[3 * f], &run.triangles[3 * f + 3], &welded.triangles[3 * f]) ? 1
+                                                                                               : -1;
+    for (int c = 0; c < 3; ++c) {
+      int& s = turned[apart.triangles[3 * f + c]];
+      s = s == 0 || s == t ? t : 2;
+    }
+  }
+  for (size_t v = 0; v < apart.vertex_count(); ++v) {
+    if (turned[v] == 0 || turned[v] == 2) continue;
+    const V3 n = at_rep[rep[v]];
+    normal[v] = {turned[v] * n.x, turned[v] * n.y, turned[v] * n.z};
+  }
+  return normal;
+}
+
+// Output faces (all, or only those the re-triangulation made) whose normal opposes the input's
+// vertex normals (`normal`, per input vertex) at their corners: dot < -tolerance * |face
+// normal| * |normal sum|.
+size_t flipped_faces(const std::vector<V3>& normal, const vrs::Mesh& out, const vrs::Report& r,
+                     bool new_only, double tolerance) {
   std::vector<uint32_t> old_of(out.vertex_count());
   for (size_t v = 0; v < r.remap.size(); ++v)
     if (r.remap[v] != vrs::kRemoved) old_of[r.remap[v]] = uint32_t(v);
@@ -311,7 +348,7 @@ size_t count_degenerate(const vrs::Mesh& m, double q) {
 }
 
 size_t count_flipped(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Report& r) {
-  return flipped_faces(in, out, r, /*new_only=*/false, /*tolerance=*/0);
+  return flipped_faces(vertex_normals(in), out, r, /*new_only=*/false, /*tolerance=*/0);
 }
 
 size_t count_duplicate_directed_edges(const vrs::Mesh& m) {
@@ -333,7 +370,7 @@ bool same_bits(const vrs::Mesh& a, const vrs::Mesh& b) {
 
 size_t count_flipped_new(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Report& r) {
   // Clearly opposed only: beyond rounding (the core decides in its own precision).
-  return flipped_faces(in, out, r, /*new_only=*/true, /*tolerance=*/1e-6);
+  return flipped_faces(vertex_normals(in), out, r, /*new_only=*/true, /*tolerance=*/1e-6);
 }
 
 std::vector<long> component_euler(const vrs::Mesh& m) {
@@ -528,9 +565,11 @@ std::string check_run(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Opti
   bool pieces_apart = false;
   size_t apart_reoriented = 0;
   vrs::Mesh apart;
+  std::vector<uint32_t> w_rep;
   if (r.welded_vertices) {
     in_w = in;
     const vrs::Welding w = vrs::weld_split_vertices(in_w.triangles, in_w.positions);
+    w_rep = w.rep;
     apart = without_repeated_corner_faces(in);
     if (count_duplicate_directed_edges(without_repeated_corner_faces(in_w)) >
         count_duplicate_directed_edges(apart)) { // welded edges walked the same way
@@ -575,11 +614,12 @@ std::string check_run(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Opti
   // The corners' normals are the promise while the input-normal veto holds; it is eased, then
   // lifted (Report::relaxed_removals) to reach a target, the fold-over check below holds always.
   // Pieces of other orientations welded: their faces' normals cancel at the welded vertices,
-  // where the core judged them turned to agree; each copy's own faces (the pieces apart) are
-  // one piece's, and the output's corners name the copies.
+  // where the core judged them turned to agree; the output's corners name the copies, each
+  // in its own piece's orientation (welded_vertex_normals).
   if (size_t f = r.relaxed_removals ? 0
-                 : pieces_apart     ? count_flipped_new(apart, out, r)
-                                    : count_flipped_new(clean, *dst, *rr))
+                 : pieces_apart
+                     ? flipped_faces(welded_vertex_normals(apart, w_rep), out, r, true, 1e-6)
+                     : count_flipped_new(clean, *dst, *rr))
     return std::to_string(f) + " new faces flipped against the input surface";
   if (size_t f = count_fold_overs(clean, *dst, *rr))
     return std::to_string(f) + " new faces fold over (against every input face near them)";
