@@ -151,27 +151,27 @@ std::vector<V3> vertex_normals(const vrs::Mesh& in) {
 }
 
 // Pieces of other orientations welded (`apart`: the input unwelded, each piece turned to agree
-// within itself, as the output holds it; `rep`: the welding): the core judges a corner on the
-// welded surface, turned to agree, by every face the weld joins at it (a face of the piece
-// across a seam included), and gives the orientation back on output. So: the welded surface's
-// normal, in the orientation of the copy's own faces; none where those disagree (a copy on the
-// kept line between a turned piece and another).
-std::vector<V3> welded_vertex_normals(const vrs::Mesh& apart, const std::vector<uint32_t>& rep) {
-  vrs::Mesh welded = apart;
-  for (uint32_t& v : welded.triangles)
-    v = rep[v];
+// within itself, as the output holds it; `welded`: the same faces welded): the core judges a
+// corner on the welded surface, turned to agree, by every face the weld joins at it (a face of
+// the piece across a seam included), and gives the orientation back on output. So: the welded
+// surface's normal, in the orientation of the copy's own faces; none where those disagree (a
+// copy on the kept line between a turned piece and another).
+std::vector<V3> welded_vertex_normals(const vrs::Mesh& apart, const vrs::Mesh& welded) {
   vrs::Mesh run = welded;
   orient_coherently(run);
   const std::vector<V3> at_rep = vertex_normals(run);
   std::vector<V3> normal(apart.vertex_count(), V3{0, 0, 0});
-  std::vector<int> turned(apart.vertex_count(), 0); // 1 kept, -1 turned, 2 both
+  std::vector<int> turned(apart.vertex_count(), 0);   // 1 kept, -1 turned, 2 both
+  std::vector<uint32_t> rep(apart.vertex_count(), 0); // the welded vertex standing for each
   for (size_t f = 0; f < apart.face_count(); ++f) {
     const int t =
         std::equal(&run.triangles[3 * f], &run.triangles[3 * f + 3], &welded.triangles[3 * f]) ? 1
                                                                                                : -1;
     for (int c = 0; c < 3; ++c) {
-      int& s = turned[apart.triangles[3 * f + c]];
+      const uint32_t v = apart.triangles[3 * f + c];
+      int& s = turned[v];
       s = s == 0 || s == t ? t : 2;
+      rep[v] = welded.triangles[3 * f + c];
     }
   }
   for (size_t v = 0; v < apart.vertex_count(); ++v) {
@@ -205,6 +205,12 @@ size_t flipped_faces(const std::vector<V3>& normal, const vrs::Mesh& out, const 
     flipped += dot(x, s) < -tolerance * std::sqrt(dot(x, x)) * std::sqrt(dot(s, s));
   }
   return flipped;
+}
+
+// count_flipped_new given the input's normals: clearly opposed only, beyond rounding (the
+// core decides in its own precision).
+size_t flipped_new(const std::vector<V3>& normal, const vrs::Mesh& out, const vrs::Report& r) {
+  return flipped_faces(normal, out, r, /*new_only=*/true, /*tolerance=*/1e-6);
 }
 
 } // namespace
@@ -369,8 +375,7 @@ bool same_bits(const vrs::Mesh& a, const vrs::Mesh& b) {
 }
 
 size_t count_flipped_new(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Report& r) {
-  // Clearly opposed only: beyond rounding (the core decides in its own precision).
-  return flipped_faces(vertex_normals(in), out, r, /*new_only=*/true, /*tolerance=*/1e-6);
+  return flipped_new(vertex_normals(in), out, r);
 }
 
 std::vector<long> component_euler(const vrs::Mesh& m) {
@@ -565,11 +570,9 @@ std::string check_run(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Opti
   bool pieces_apart = false;
   size_t apart_reoriented = 0;
   vrs::Mesh apart;
-  std::vector<uint32_t> w_rep;
   if (r.welded_vertices) {
     in_w = in;
     const vrs::Welding w = vrs::weld_split_vertices(in_w.triangles, in_w.positions);
-    w_rep = w.rep;
     apart = without_repeated_corner_faces(in);
     if (count_duplicate_directed_edges(without_repeated_corner_faces(in_w)) >
         count_duplicate_directed_edges(apart)) { // welded edges walked the same way
@@ -617,9 +620,8 @@ std::string check_run(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Opti
   // where the core judged them turned to agree; the output's corners name the copies, each
   // in its own piece's orientation (welded_vertex_normals).
   if (size_t f = r.relaxed_removals ? 0
-                 : pieces_apart
-                     ? flipped_faces(welded_vertex_normals(apart, w_rep), out, r, true, 1e-6)
-                     : count_flipped_new(clean, *dst, *rr))
+                 : pieces_apart     ? flipped_new(welded_vertex_normals(apart, in_w), out, r)
+                                    : count_flipped_new(clean, *dst, *rr))
     return std::to_string(f) + " new faces flipped against the input surface";
   if (size_t f = count_fold_overs(clean, *dst, *rr))
     return std::to_string(f) + " new faces fold over (against every input face near them)";
