@@ -43,16 +43,18 @@ void fill_fan(const Ring& ring, int apex, Patch& out) {
 
 } // namespace
 
-bool fill_candidate(const Ring& ring, OpenRing open, int c, Patch& out) {
+bool fill_triangles(const Ring& ring, OpenRing open, int c, Patch& out) {
   if (ring.verts == 2) { // one triangle cut off: its edge between the two neighbours stays
     out.count = 0;
     return !ring.closed();
   }
-  if (c == 0) {
-    if (!fill_projection(ring, open, out)) return false;
-  } else {
-    fill_fan(ring, c - 1, out);
-  }
+  if (c == 0) return fill_projection(ring, open, out);
+  fill_fan(ring, c - 1, out);
+  return true;
+}
+
+bool fill_candidate(const Ring& ring, OpenRing open, int c, Patch& out) {
+  if (!fill_triangles(ring, open, c, out)) return false;
   set_corner_faces(ring, out);
   return true;
 }

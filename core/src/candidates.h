@@ -27,6 +27,9 @@ inline int candidate_count(const Ring& ring, bool fans) {
 // Writes candidate `c` into `out` (tri and from; the projection `out.p`, `out.q` and
 // `out.normal` must be set). False when the projection folds (candidate 0 only).
 bool fill_candidate(const Ring& ring, OpenRing open, int c, Patch& out);
+// fill_candidate without `out.from`: what ranking the candidates reads (a twentieth of a plan's
+// instructions were corner faces set for candidates never vetted).
+bool fill_triangles(const Ring& ring, OpenRing open, int c, Patch& out);
 
 // Rings of more neighbours than this get no least-cost filling (its work grows as k^3).
 constexpr int kMaxLeastCostRing = 20;

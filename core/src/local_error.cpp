@@ -220,16 +220,30 @@ double moved_surface(const OldFan& fan, const Ring& ring, const Patch& patch, Ve
   return moved;
 }
 
-double drop_height(uint32_t v, const Patch& patch, const Evaluator& eval) {
+double drop_height(uint32_t v, const Patch& patch, const Evaluator& eval, double cap,
+                   bool& complete) {
   const Vec3 c = eval.position(v);
-  double worst = 0; // squared: one square root per patch, none per triangle
+  // Squared: one square root per patch, none per triangle. Past the cap squared (rounded up a
+  // little: the square root taken afterwards must not come back under the cap) it stops.
+  const double stop = cap * cap * (1 + 1e-12);
+  double worst = 0;
+  complete = true;
   for (int t = 0; t < patch.count; ++t) {
     Vec3 x = patch.q[patch.tri[t][0]], y = patch.q[patch.tri[t][1]], z = patch.q[patch.tri[t][2]];
     Vec3 n = cross(y - x, z - x);
     double h = dot(c - x, n), nn = dot(n, n);
     if (nn > 0) worst = std::max(worst, h * h / nn);
+    if (worst > stop && t + 1 < patch.count) {
+      complete = false;
+      break;
+    }
   }
   return std::sqrt(worst);
+}
+
+double drop_height(uint32_t v, const Patch& patch, const Evaluator& eval) {
+  bool complete;
+  return drop_height(v, patch, eval, std::numeric_limits<double>::infinity(), complete);
 }
 
 double mean_triangle_area(const float* pos, const std::vector<uint32_t>& tris, Workers* workers) {

@@ -67,7 +67,10 @@ double moved_surface(const OldFan& fan, const Ring& ring, const Patch& patch, Ve
 
 // How far v drops onto the planes of the patch's triangles, at most: an O(k) estimate of
 // patch_error's main term, used to rank the ways to fill one hole (same weight for all).
+// With a `cap`, it may stop once over it: `complete` false, the height so far (a lower bound).
 double drop_height(uint32_t v, const Patch& patch, const Evaluator& eval);
+double drop_height(uint32_t v, const Patch& patch, const Evaluator& eval, double cap,
+                   bool& complete);
 
 // Mean area of the finite triangles (1 when there is none): the weight's reference.
 double mean_triangle_area(const float* positions, const std::vector<uint32_t>& triangles,

@@ -66,27 +66,31 @@ double Simplifier::price(const void* self, uint32_t v, const Ring& ring, const P
   return std::max(local, worst);
 }
 
-double Simplifier::estimate(const void* self, uint32_t v, const Ring&, const Patch& patch) {
-  return drop_height(v, patch, static_cast<const Simplifier*>(self)->eval_);
+double Simplifier::estimate(const void* self, uint32_t v, const Ring&, const Patch& patch,
+                            double cap, bool& complete) {
+  return drop_height(v, patch, static_cast<const Simplifier*>(self)->eval_, cap, complete);
 }
 
 Reject Simplifier::plan(uint32_t v, const Ring& ring, const Evaluation& e, Patch& patch,
-                        double& cost, bool check_topology, bool price) const {
+                        double& cost, bool check_topology, bool price, bool hinted) const {
   std::array<int, 2> seam;
   const bool on_seam = along(v, ring, seam) == Along::Seam;
-  auto attempt = [&](Vec3 d) {
-    return on_seam
-               ? planner_.plan_seam(v, ring, seam[0], seam[1], d, patch, cost, check_topology,
-                                    price)
-               : planner_.plan(v, ring, d, patch, cost, check_topology, OpenRing::Border, price);
+  const int hint = hinted && lazy_ && chosen_[v] != kNoCandidate ? chosen_[v] : -1;
+  auto attempt = [&](Vec3 d, int first) {
+    return on_seam ? planner_.plan_seam(v, ring, seam[0], seam[1], d, patch, cost, check_topology,
+                                        price)
+                   : planner_.plan(v, ring, d, patch, cost, check_topology, OpenRing::Border, price,
+                                   first);
   };
-  Reject why = attempt(e.normal);
+  Reject why = attempt(e.normal, hint);
+  const bool first_direction = why == RejectCount && !on_seam;
   // At tips, creases and thin parts the average plane of a strongly curved ring can fold it
   // or tilt the patch away, while another direction still sees the ring as a star.
   if ((why == RejectFold || why == RejectFlip) && opt_.mode == Mode::Surface3D) {
     Vec3 d;
-    if (star_direction(v, ring, eval_, d)) why = attempt(d);
+    if (star_direction(v, ring, eval_, d)) why = attempt(d, -1);
   }
+  if (lazy_) chosen_[v] = first_direction ? patch.candidate : kNoCandidate;
   return why;
 }
 

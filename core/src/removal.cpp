@@ -54,37 +54,10 @@ bool star_direction(uint32_t v, const Ring& ring, const Evaluator& eval, Vec3& o
 }
 
 Reject Planner::plan(uint32_t v, const Ring& ring, Vec3 n, Patch& out, double& cost,
-                     bool check_topology, OpenRing open, bool price) const {
+                     bool check_topology, OpenRing open, bool price, int hint) const {
   const int k = ring.verts;
   if (k < 3 && !(k == 2 && !ring.closed())) return RejectFold;
   project(v, ring, n, *eval_, out);
-  const int candidates = candidate_count(ring, fans_);
-  // Every candidate gets the cheap estimate; in its order, the first one no veto refuses is
-  // planned and priced exactly. (Pricing each exactly chose about as well on the benchmark's
-  // meshes and cost 2.5x the time.) The projection's triangles are kept aside: ear clipping
-  // is the one candidate that is dear to make twice.
-  std::array<double, kMaxRing + 2> estimate;
-  std::array<uint8_t, kMaxRing + 2> order;
-  std::array<std::array<uint8_t, 3>, kMaxRing> projected;
-  int projected_count = -1, m = 0;
-  for (int c = 0; c < candidates; ++c) {
-    if (!fill_candidate(ring, open, c, out)) {
-      // On a fixed plane a fan triangulates the projected ring only where the ring is the
-      // simple polygon the projection checks (then each of its triangles must face the plane).
-      if (on_plane_) return RejectFold;
-      continue;
-    }
-    if (c == 0) {
-      projected = out.tri;
-      projected_count = out.count;
-    }
-    estimate[c] = candidates > 1 ? price_.estimate(v, ring, out) : 0.0;
-    order[m++] = uint8_t(c);
-  }
-  // Insertion sort: stable, no allocation, and m is small.
-  for (int i = 1; i < m; ++i)
-    for (int j = i; j > 0 && estimate[order[j]] < estimate[order[j - 1]]; --j)
-      std::swap(order[j], order[j - 1]);
   // Once the input judges fold-overs, the shape veto no longer reads the faces replaced.
   FaceNormals replaced;
   if (!limits_->folds_judged_by_input) replaced_face_normals(v, ring, out, *eval_, replaced);
@@ -119,9 +92,64 @@ Reject Planner::plan(uint32_t v, const Ring& ring, Vec3 n, Patch& out, double& c
       why = veto_bound(ring, out, eval_->position(v), face_bound_, *limits_);
     return why;
   };
+  const int candidates = candidate_count(ring, fans_);
+  auto accept = [&](int c) {
+    out.candidate = uint8_t(c);
+    cost = price ? price_.exact(v, ring, out) : 0.0;
+    return RejectCount;
+  };
+  if (hint >= 0 && hint < candidates && fill_candidate(ring, open, hint, out) &&
+      vetoed(hint == 0 || on_plane_) == RejectCount)
+    return accept(hint);
+  // Every candidate gets the cheap estimate; in its order, the first one no veto refuses is
+  // planned and priced exactly. (Pricing each exactly chose about as well on the benchmark's
+  // meshes and cost 2.5x the time.) The projection's triangles are kept aside: ear clipping
+  // is the one candidate that is dear to make twice. An estimate may stop once it is beyond
+  // the best so far (a lower bound then): it is finished only if its turn comes, and the
+  // order is the one the finished estimates give (ties to the lower candidate).
+  std::array<double, kMaxRing + 2> estimate;
+  std::array<bool, kMaxRing + 2> complete;
+  std::array<uint8_t, kMaxRing + 2> listed;
+  std::array<std::array<uint8_t, 3>, kMaxRing> projected;
+  int projected_count = -1, m = 0;
+  double best = std::numeric_limits<double>::infinity();
+  for (int c = 0; c < candidates; ++c) {
+    if (!fill_triangles(ring, open, c, out)) {
+      // On a fixed plane a fan triangulates the projected ring only where the ring is the
+      // simple polygon the projection checks (then each of its triangles must face the plane).
+      if (on_plane_) return RejectFold;
+      continue;
+    }
+    if (c == 0) {
+      projected = out.tri;
+      projected_count = out.count;
+    }
+    complete[c] = true;
+    estimate[c] = candidates > 1 ? price_.estimate(v, ring, out, best, complete[c]) : 0.0;
+    if (complete[c]) best = std::min(best, estimate[c]);
+    listed[m++] = uint8_t(c);
+  }
+  // The untried candidate of least (estimate, index); an unfinished estimate is finished first.
+  auto next = [&]() {
+    while (true) {
+      int at = 0;
+      for (int i = 1; i < m; ++i)
+        if (estimate[listed[i]] < estimate[listed[at]] ||
+            (estimate[listed[i]] == estimate[listed[at]] && listed[i] < listed[at]))
+          at = i;
+      const int c = listed[at];
+      if (complete[c]) {
+        listed[at] = listed[--m];
+        return c;
+      }
+      fill_triangles(ring, open, c, out);
+      estimate[c] =
+          price_.estimate(v, ring, out, std::numeric_limits<double>::infinity(), complete[c]);
+    }
+  };
   Reject first_why = RejectCount;
-  for (int r = 0; r < m; ++r) {
-    const int c = order[r];
+  while (m > 0) {
+    const int c = next();
     if (c == 0) {
       out.tri = projected;
       out.count = projected_count;
@@ -130,10 +158,7 @@ Reject Planner::plan(uint32_t v, const Ring& ring, Vec3 n, Patch& out, double& c
       fill_candidate(ring, open, c, out);
     }
     const Reject why = vetoed(c == 0 || on_plane_);
-    if (why == RejectCount) {
-      cost = price ? price_.exact(v, ring, out) : 0.0;
-      return RejectCount;
-    }
+    if (why == RejectCount) return accept(c);
     if (first_why == RejectCount) first_why = why;
   }
   // Every fan and the projection has a triangle some veto refuses: in the last resort, look
@@ -163,10 +188,8 @@ Reject Planner::plan(uint32_t v, const Ring& ring, Vec3 n, Patch& out, double& c
     };
     if (fill_least_cost(ring, triangle_cost, diagonal_ok, out)) {
       set_corner_faces(ring, out);
-      if (vetoed(false) == RejectCount) { // a triangle that exists already, or the bound
-        cost = price ? price_.exact(v, ring, out) : 0.0;
-        return RejectCount;
-      }
+      if (vetoed(false) == RejectCount) // a triangle that exists already, or the bound
+        return accept(kNoCandidate);
     }
   }
   return first_why == RejectCount ? RejectFold : first_why;
@@ -207,6 +230,7 @@ Reject Planner::plan_seam(uint32_t v, const Ring& ring, int i, int j, Vec3 n, Pa
       }
   }
   out.count = count;
+  out.candidate = kNoCandidate;
   project(v, ring, n, *eval_, out);
   if (face_bound_ && !ring.closed()) return RejectBound;
   if (face_bound_) {

@@ -20,12 +20,18 @@ bool star_direction(uint32_t v, const Ring& ring, const Evaluator& eval, Vec3& o
 
 // What a candidate patch costs (the priority's view of it); lower is better. `estimate` ranks
 // the candidates cheaply, `exact` prices the one planned (the vertex's priority).
+// The estimate may stop once it is sure to exceed `cap` (a candidate already ranked costs
+// that): it then returns what it has so far, a lower bound, with `complete` false.
 struct Pricer {
   using Fn = double (*)(const void* ctx, uint32_t v, const Ring& ring, const Patch& patch);
-  Fn estimate_fn = nullptr, exact_fn = nullptr;
+  using EstimateFn = double (*)(const void* ctx, uint32_t v, const Ring& ring, const Patch& patch,
+                                double cap, bool& complete);
+  EstimateFn estimate_fn = nullptr;
+  Fn exact_fn = nullptr;
   const void* ctx = nullptr;
-  double estimate(uint32_t v, const Ring& ring, const Patch& patch) const {
-    return estimate_fn(ctx, v, ring, patch);
+  double estimate(uint32_t v, const Ring& ring, const Patch& patch, double cap,
+                  bool& complete) const {
+    return estimate_fn(ctx, v, ring, patch, cap, complete);
   }
   double exact(uint32_t v, const Ring& ring, const Patch& patch) const {
     return exact_fn(ctx, v, ring, patch);
@@ -49,9 +55,12 @@ class Planner {
   // `check_topology` = false skips the mesh look-ups (new triangle / edge already there): a pass
   // for the priority only, redone in full when the vertex is popped. `price` = false skips the
   // exact price (`cost` is then 0): the pop of a vertex whose price is still today's.
+  // `hint`: the candidate a plan of the same ring on the same plane chose (Patch::candidate),
+  // tried first; if no veto refuses it, it is what the whole plan would choose (the vetoes
+  // refused the ones ranked before it then, and refuse them still), and the ranking is skipped.
   Reject plan(uint32_t v, const Ring& ring, Vec3 normal, Patch& out, double& cost,
-              bool check_topology = true, OpenRing open = OpenRing::Border,
-              bool price = true) const;
+              bool check_topology = true, OpenRing open = OpenRing::Border, bool price = true,
+              int hint = -1) const;
 
   // The removal of a vertex on exactly two constrained edges, to ring positions i < j: the ring
   // is cut along the polyline (ring[i], v, ring[j]) and each side is planned as an open ring

@@ -54,7 +54,8 @@ void Simplifier::plan_removal(Planned& p) const {
   }
   // The plan is made again: a diagonal may have become an edge since v was queued. Only a
   // stale price is made again.
-  p.why = plan(p.v, p.ring, e, p.patch, cost, /*check_topology=*/true, p.stale && local);
+  p.why = plan(p.v, p.ring, e, p.patch, cost, /*check_topology=*/true, p.stale && local,
+               /*hinted=*/!p.stale);
   p.priority = local ? std::max(cost, chord) : e.factor;
   if (p.why == RejectCount && lazy_)
     fan_area_changes(eval_.position(p.v), p.ring, p.patch, p.area_change);

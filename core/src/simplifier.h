@@ -107,10 +107,13 @@ class Simplifier {
   bool split_fans_apart(const UninitVector<uint8_t>& kinds);
   // Plans v's removal on its evaluated plane, then on a fallback direction; RejectCount = ok,
   // with the chosen patch's local error in `cost`.
+  // `hinted`: v's ring is the one its last plan saw (a pop whose price is still today's), so
+  // that plan's candidate (chosen_) is tried first.
   Reject plan(uint32_t v, const Ring& ring, const Evaluation& e, Patch& patch, double& cost,
-              bool check_topology = true, bool price = true) const;
+              bool check_topology = true, bool price = true, bool hinted = false) const;
   static double price(const void* self, uint32_t v, const Ring& ring, const Patch& patch);
-  static double estimate(const void* self, uint32_t v, const Ring& ring, const Patch& patch);
+  static double estimate(const void* self, uint32_t v, const Ring& ring, const Patch& patch,
+                         double cap, bool& complete);
 
   // --- scheduler.cpp
   // Plans p.v's removal against today's mesh (reads only: the workers call it).
@@ -203,7 +206,12 @@ class Simplifier {
   // Written whole by the workers at the first prices (no serial fill first).
   UninitVector<float> fan_area_; // area of each vertex's faces (kept up to date with lazy_)
   UninitVector<float> normals_;  // unit vertex normals of the input surface, 3 a vertex
-  std::vector<uint8_t> flags_;   // vertex_flags.h
+  // Per vertex, with lazy_: the candidate its last plan chose on its evaluated plane
+  // (Patch::candidate; kNoCandidate: none, or another direction or a seam's). Written by the
+  // thread planning the vertex, as its price is; a pop of an unchanged ring tries it first
+  // (the ranking skipped: bench/ablation.md).
+  mutable UninitVector<uint8_t> chosen_;
+  std::vector<uint8_t> flags_; // vertex_flags.h
   void set_refused(uint32_t v, Reject why) { flip_refused_ += size_t(refuse(v, why)); }
   // Records v's last refusal; returns the change of flip_refused_ (parts count their own).
   ptrdiff_t refuse(uint32_t v, Reject why) {

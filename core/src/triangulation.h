@@ -28,7 +28,10 @@ struct Patch {
   // triangle (CornerDoubt bits). Then the planner asks the input itself; on a crease the price
   // counts the surface moved too (patch_error).
   uint8_t corner_doubts = 0;
+  // The candidate (candidates.h) that made it; kNoCandidate: the least-cost filling, or sides.
+  uint8_t candidate = 0;
 };
+constexpr uint8_t kNoCandidate = 255;
 
 enum CornerDoubt : uint8_t {
   kCornerTurned = 1,   // its normal more than 45 degrees from the triangle

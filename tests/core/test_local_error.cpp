@@ -45,7 +45,11 @@ Planned plan_centre(const Mesh& m, uint32_t v, Vec3 normal, float spread = 0) {
   RemovalLimits limits;
   double cost = 0;
   auto zero = [](const void*, uint32_t, const Ring&, const Patch&) { return 0.0; };
-  Pricer none{zero, zero, nullptr};
+  auto flat = [](const void*, uint32_t, const Ring&, const Patch&, double, bool& complete) {
+    complete = true;
+    return 0.0;
+  };
+  Pricer none{flat, zero, nullptr};
   Planner planner(eval, t, m.triangles.data(), up.data(), limits, none, /*fans=*/false);
   p.why = planner.plan(v, p.ring, normal, p.patch, cost);
   return p;
@@ -193,4 +197,41 @@ TEST(LocalError, KeepsRemovedVerticesNearerTheResultThanThePapersFactor) {
   RecordProperty("factor_worst", std::to_string(worst[0]));
   RecordProperty("local_error_worst", std::to_string(worst[1]));
   EXPECT_LT(worst[1] * 5, worst[0]) << "factor " << worst[0] << ", local error " << worst[1];
+}
+
+// With a cap, the drop height may stop early: then it says so and gives a lower bound above
+// the cap; when it finishes, it is the uncapped height bit for bit (the ranking must not move).
+TEST(LocalError, CappedDropHeightIsExactOrAFlaggedLowerBoundAboveTheCap) {
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<float> u(-1, 1);
+  int stopped = 0, finished = 0;
+  for (int trial = 0; trial < 500; ++trial) {
+    std::vector<float> pos;
+    const int k = 3 + trial % 8;
+    for (int i = 0; i <= k; ++i) // ring vertices 0..k-1, the removed vertex k
+      pos.insert(pos.end(), {std::cos(6.283f * i / k), std::sin(6.283f * i / k), 0.3f * u(rng)});
+    Evaluator eval(Mode::Surface3D, {0, 0, 1}, pos.data());
+    Patch patch;
+    for (int i = 0; i < k; ++i)
+      patch.q[i] = eval.position(i);
+    const int apex = trial % k;
+    patch.count = 0;
+    for (int i = 1; i + 1 < k; ++i)
+      patch.tri[patch.count++] = {uint8_t(apex), uint8_t((apex + i) % k),
+                                  uint8_t((apex + i + 1) % k)};
+    const double full = drop_height(k, patch, eval);
+    const double cap = full * std::abs(u(rng)) * 1.2;
+    bool complete = false;
+    const double capped = drop_height(k, patch, eval, cap, complete);
+    if (complete) {
+      ++finished;
+      EXPECT_EQ(capped, full) << "trial " << trial;
+    } else {
+      ++stopped;
+      EXPECT_LE(capped, full) << "trial " << trial;
+      EXPECT_GT(capped, cap) << "trial " << trial;
+    }
+  }
+  EXPECT_GT(stopped, 50); // both ways taken
+  EXPECT_GT(finished, 50);
 }

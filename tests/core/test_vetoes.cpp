@@ -1,6 +1,8 @@
 // What forbids a patch: topology, slivers, the input's side, fold-overs.
 #include <gtest/gtest.h>
 
+#include <cmath>
+
 #include "candidates.h"
 #include "removal.h"
 #include "ring_case.h"
@@ -132,7 +134,8 @@ TEST(Vetoes, PlannerTakesTheBestRankedValidCandidate) {
   Evaluator eval(Mode::Surface3D, {0, 0, 1}, s.mesh.positions.data());
   RemovalLimits limits;
   // Rank the fan from the notch (candidate 4) first, the projection last.
-  Pricer price{[](const void*, uint32_t, const Ring&, const Patch& p) {
+  Pricer price{[](const void*, uint32_t, const Ring&, const Patch& p, double, bool& complete) {
+                 complete = true;
                  return p.tri[0][0] == 3 && p.count == 4 && p.tri[1][0] == 3 ? 0.0 : 1.0;
                },
                [](const void*, uint32_t, const Ring&, const Patch&) { return 7.0; }, nullptr};
@@ -141,6 +144,83 @@ TEST(Vetoes, PlannerTakesTheBestRankedValidCandidate) {
   double cost = 0;
   ASSERT_EQ(planner.plan(6, s.ring, {0, 0, 1}, out, cost), RejectCount);
   EXPECT_EQ(cost, 7.0);
+  EXPECT_EQ(out.candidate, 1 + 3);
   for (int t = 0; t < out.count; ++t)
     EXPECT_EQ(out.tri[t][0], 3) << "triangle " << t;
+}
+
+namespace {
+
+// The fan from the notch (ring vertex 3) of the arrow-shaped ring.
+bool notch_fan(const Patch& p) {
+  return p.count == 4 && p.tri[0][0] == 3 && p.tri[1][0] == 3;
+}
+int estimates = 0; // estimates asked of the pricers below
+
+} // namespace
+
+// An estimate that stopped early is a lower bound: the planner finishes it before it ranks
+// the candidate by it. Here the notch's fan says 0 when capped (stopped), 5 when finished;
+// every other candidate 1: the planner must not take the notch's fan.
+TEST(Vetoes, PlannerFinishesAnEstimateThatStoppedBeforeRankingByIt) {
+  RingCase s;
+  s.mesh = vrs_test::concave_fan();
+  s.mesh.positions[3 * 6 + 2] = 0.3f;
+  open_ring(s, 6);
+  Evaluator eval(Mode::Surface3D, {0, 0, 1}, s.mesh.positions.data());
+  RemovalLimits limits;
+  Pricer price{[](const void*, uint32_t, const Ring&, const Patch& p, double cap, bool& complete) {
+                 complete = !notch_fan(p) || std::isinf(cap);
+                 return notch_fan(p) ? (complete ? 5.0 : 0.0) : 1.0;
+               },
+               [](const void*, uint32_t, const Ring&, const Patch&) { return 7.0; }, nullptr};
+  Planner planner(eval, s.topo, s.mesh.triangles.data(), s.normals.data(), limits, price, true);
+  Patch out;
+  double cost = 0;
+  ASSERT_EQ(planner.plan(6, s.ring, {0, 0, 1}, out, cost), RejectCount);
+  EXPECT_FALSE(notch_fan(out));
+  EXPECT_NE(out.candidate, 1 + 3);
+}
+
+// A pop whose ring is unchanged tries the candidate its last plan chose first, without ranking;
+// a hint some veto refuses is no shortcut: the whole plan is made, and chooses as it would.
+TEST(Vetoes, PlannerTriesItsHintFirstAndPlansInFullWhenItIsRefused) {
+  RingCase s;
+  s.mesh = vrs_test::concave_fan();
+  s.mesh.positions[3 * 6 + 2] = 0.3f;
+  open_ring(s, 6);
+  Evaluator eval(Mode::Surface3D, {0, 0, 1}, s.mesh.positions.data());
+  RemovalLimits limits;
+  Pricer price{[](const void*, uint32_t, const Ring&, const Patch& p, double, bool& complete) {
+                 ++estimates;
+                 complete = true;
+                 return notch_fan(p) ? 0.0 : 1.0;
+               },
+               [](const void*, uint32_t, const Ring&, const Patch&) { return 7.0; }, nullptr};
+  Planner planner(eval, s.topo, s.mesh.triangles.data(), s.normals.data(), limits, price, true);
+  Patch full, hinted;
+  double cost = 0;
+  estimates = 0;
+  ASSERT_EQ(planner.plan(6, s.ring, {0, 0, 1}, full, cost), RejectCount);
+  ASSERT_GT(estimates, 1);
+  ASSERT_EQ(full.candidate, 1 + 3);
+  estimates = 0;
+  ASSERT_EQ(planner.plan(6, s.ring, {0, 0, 1}, hinted, cost, true, OpenRing::Border, true,
+                         full.candidate),
+            RejectCount);
+  EXPECT_EQ(estimates, 0);
+  EXPECT_EQ(cost, 7.0);
+  ASSERT_EQ(hinted.count, full.count);
+  for (int t = 0; t < full.count; ++t) {
+    EXPECT_EQ(hinted.tri[t], full.tri[t]) << "triangle " << t;
+    EXPECT_EQ(hinted.from[t], full.from[t]) << "triangle " << t;
+  }
+  // The fan from ring vertex 2 turns a triangle over (FoldOverRefuses... above): refused as a
+  // hint, the plan is made in full and takes the notch's fan again.
+  estimates = 0;
+  ASSERT_EQ(planner.plan(6, s.ring, {0, 0, 1}, hinted, cost, true, OpenRing::Border, true, 1 + 2),
+            RejectCount);
+  EXPECT_GT(estimates, 1);
+  EXPECT_EQ(hinted.candidate, 1 + 3);
+  EXPECT_TRUE(notch_fan(hinted));
 }
