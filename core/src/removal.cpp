@@ -93,8 +93,12 @@ Reject Planner::plan(uint32_t v, const Ring& ring, Vec3 n, Patch& out, double& c
     return why;
   };
   const int candidates = candidate_count(ring, fans_);
+  // A candidate is a hint for the next plan of the same ring only if every one ranked before it
+  // was refused for the ring's own sake: an edge or a triangle found elsewhere in the mesh can
+  // go while the ring stays as it is.
+  bool refused_by_mesh = false;
   auto accept = [&](int c) {
-    out.candidate = uint8_t(c);
+    out.candidate = refused_by_mesh ? kNoCandidate : uint8_t(c);
     cost = price ? price_.exact(v, ring, out) : 0.0;
     return RejectCount;
   };
@@ -160,6 +164,7 @@ Reject Planner::plan(uint32_t v, const Ring& ring, Vec3 n, Patch& out, double& c
     const Reject why = vetoed(c == 0 || on_plane_);
     if (why == RejectCount) return accept(c);
     if (first_why == RejectCount) first_why = why;
+    refused_by_mesh |= why == RejectEdge || why == RejectTriangle;
   }
   // Every fan and the projection has a triangle some veto refuses: in the last resort, look
   // among all the ring's triangulations for one without (ranked by their triangles' distance

@@ -57,7 +57,8 @@ class Planner {
   // exact price (`cost` is then 0): the pop of a vertex whose price is still today's.
   // `hint`: the candidate a plan of the same ring on the same plane chose (Patch::candidate),
   // tried first; if no veto refuses it, it is what the whole plan would choose (the vetoes
-  // refused the ones ranked before it then, and refuse them still), and the ranking is skipped.
+  // refused the ones ranked before it then for the ring's own sake, and refuse them still), and
+  // the ranking is skipped.
   Reject plan(uint32_t v, const Ring& ring, Vec3 normal, Patch& out, double& cost,
               bool check_topology = true, OpenRing open = OpenRing::Border, bool price = true,
               int hint = -1) const;

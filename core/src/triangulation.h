@@ -28,7 +28,9 @@ struct Patch {
   // triangle (CornerDoubt bits). Then the planner asks the input itself; on a crease the price
   // counts the surface moved too (patch_error).
   uint8_t corner_doubts = 0;
-  // The candidate (candidates.h) that made it; kNoCandidate: the least-cost filling, or sides.
+  // The candidate (candidates.h) that made it, as a hint for the same ring's next plan
+  // (Planner::plan); kNoCandidate: the least-cost filling, a seam's sides, or one ranked after a
+  // candidate the mesh's other faces refused.
   uint8_t candidate = 0;
 };
 constexpr uint8_t kNoCandidate = 255;

@@ -2,6 +2,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <memory>
 
 #include "candidates.h"
 #include "removal.h"
@@ -125,59 +126,66 @@ TEST(Vetoes, SliverIsDegenerate) {
             RejectDegenerate);
 }
 
+namespace {
+
+// The arrow-shaped ring with v raised above it (every filling drops it), planned with `price`.
+struct RaisedArrow {
+  RingCase s;
+  std::unique_ptr<Evaluator> eval;
+  RemovalLimits limits;
+  RaisedArrow() {
+    s.mesh = vrs_test::concave_fan();
+    s.mesh.positions[3 * 6 + 2] = 0.3f;
+    open_ring(s, 6);
+    eval = std::make_unique<Evaluator>(Mode::Surface3D, Vec3{0, 0, 1}, s.mesh.positions.data());
+  }
+  Reject plan(const Pricer& price, Patch& out, double& cost, int hint = -1) const {
+    Planner planner(*eval, s.topo, s.mesh.triangles.data(), s.normals.data(), limits, price, true);
+    return planner.plan(6, s.ring, {0, 0, 1}, out, cost, true, OpenRing::Border, true, hint);
+  }
+};
+// The fan from the notch (ring vertex 3, candidate 4).
+bool notch_fan(const Patch& p) {
+  return p.count == 4 && p.tri[0][0] == 3 && p.tri[1][0] == 3;
+}
+double seven(const void*, uint32_t, const Ring&, const Patch&) {
+  return 7.0;
+}
+int estimates = 0; // estimates asked of the pricers below
+
+} // namespace
+
 // The planner keeps a candidate no veto refuses, and the one its estimate ranks first.
 TEST(Vetoes, PlannerTakesTheBestRankedValidCandidate) {
-  RingCase s;
-  s.mesh = vrs_test::concave_fan();
-  s.mesh.positions[3 * 6 + 2] = 0.3f; // v above the ring: every filling drops it
-  open_ring(s, 6);
-  Evaluator eval(Mode::Surface3D, {0, 0, 1}, s.mesh.positions.data());
-  RemovalLimits limits;
-  // Rank the fan from the notch (candidate 4) first, the projection last.
+  const RaisedArrow a;
+  // Rank the fan from the notch first, the projection last.
   Pricer price{[](const void*, uint32_t, const Ring&, const Patch& p, double, bool& complete) {
                  complete = true;
-                 return p.tri[0][0] == 3 && p.count == 4 && p.tri[1][0] == 3 ? 0.0 : 1.0;
+                 return notch_fan(p) ? 0.0 : 1.0;
                },
-               [](const void*, uint32_t, const Ring&, const Patch&) { return 7.0; }, nullptr};
-  Planner planner(eval, s.topo, s.mesh.triangles.data(), s.normals.data(), limits, price, true);
+               seven, nullptr};
   Patch out;
   double cost = 0;
-  ASSERT_EQ(planner.plan(6, s.ring, {0, 0, 1}, out, cost), RejectCount);
+  ASSERT_EQ(a.plan(price, out, cost), RejectCount);
   EXPECT_EQ(cost, 7.0);
   EXPECT_EQ(out.candidate, 1 + 3);
   for (int t = 0; t < out.count; ++t)
     EXPECT_EQ(out.tri[t][0], 3) << "triangle " << t;
 }
 
-namespace {
-
-// The fan from the notch (ring vertex 3) of the arrow-shaped ring.
-bool notch_fan(const Patch& p) {
-  return p.count == 4 && p.tri[0][0] == 3 && p.tri[1][0] == 3;
-}
-int estimates = 0; // estimates asked of the pricers below
-
-} // namespace
-
 // An estimate that stopped early is a lower bound: the planner finishes it before it ranks
 // the candidate by it. Here the notch's fan says 0 when capped (stopped), 5 when finished;
 // every other candidate 1: the planner must not take the notch's fan.
 TEST(Vetoes, PlannerFinishesAnEstimateThatStoppedBeforeRankingByIt) {
-  RingCase s;
-  s.mesh = vrs_test::concave_fan();
-  s.mesh.positions[3 * 6 + 2] = 0.3f;
-  open_ring(s, 6);
-  Evaluator eval(Mode::Surface3D, {0, 0, 1}, s.mesh.positions.data());
-  RemovalLimits limits;
+  const RaisedArrow a;
   Pricer price{[](const void*, uint32_t, const Ring&, const Patch& p, double cap, bool& complete) {
                  complete = !notch_fan(p) || std::isinf(cap);
                  return notch_fan(p) ? (complete ? 5.0 : 0.0) : 1.0;
                },
-               [](const void*, uint32_t, const Ring&, const Patch&) { return 7.0; }, nullptr};
-  Planner planner(eval, s.topo, s.mesh.triangles.data(), s.normals.data(), limits, price, true);
+               seven, nullptr};
   Patch out;
   double cost = 0;
-  ASSERT_EQ(planner.plan(6, s.ring, {0, 0, 1}, out, cost), RejectCount);
+  ASSERT_EQ(a.plan(price, out, cost), RejectCount);
   EXPECT_FALSE(notch_fan(out));
   EXPECT_NE(out.candidate, 1 + 3);
 }
@@ -185,29 +193,21 @@ TEST(Vetoes, PlannerFinishesAnEstimateThatStoppedBeforeRankingByIt) {
 // A pop whose ring is unchanged tries the candidate its last plan chose first, without ranking;
 // a hint some veto refuses is no shortcut: the whole plan is made, and chooses as it would.
 TEST(Vetoes, PlannerTriesItsHintFirstAndPlansInFullWhenItIsRefused) {
-  RingCase s;
-  s.mesh = vrs_test::concave_fan();
-  s.mesh.positions[3 * 6 + 2] = 0.3f;
-  open_ring(s, 6);
-  Evaluator eval(Mode::Surface3D, {0, 0, 1}, s.mesh.positions.data());
-  RemovalLimits limits;
+  const RaisedArrow a;
   Pricer price{[](const void*, uint32_t, const Ring&, const Patch& p, double, bool& complete) {
                  ++estimates;
                  complete = true;
                  return notch_fan(p) ? 0.0 : 1.0;
                },
-               [](const void*, uint32_t, const Ring&, const Patch&) { return 7.0; }, nullptr};
-  Planner planner(eval, s.topo, s.mesh.triangles.data(), s.normals.data(), limits, price, true);
+               seven, nullptr};
   Patch full, hinted;
   double cost = 0;
   estimates = 0;
-  ASSERT_EQ(planner.plan(6, s.ring, {0, 0, 1}, full, cost), RejectCount);
+  ASSERT_EQ(a.plan(price, full, cost), RejectCount);
   ASSERT_GT(estimates, 1);
   ASSERT_EQ(full.candidate, 1 + 3);
   estimates = 0;
-  ASSERT_EQ(planner.plan(6, s.ring, {0, 0, 1}, hinted, cost, true, OpenRing::Border, true,
-                         full.candidate),
-            RejectCount);
+  ASSERT_EQ(a.plan(price, hinted, cost, full.candidate), RejectCount);
   EXPECT_EQ(estimates, 0);
   EXPECT_EQ(cost, 7.0);
   ASSERT_EQ(hinted.count, full.count);
@@ -218,9 +218,38 @@ TEST(Vetoes, PlannerTriesItsHintFirstAndPlansInFullWhenItIsRefused) {
   // The fan from ring vertex 2 turns a triangle over (FoldOverRefuses... above): refused as a
   // hint, the plan is made in full and takes the notch's fan again.
   estimates = 0;
-  ASSERT_EQ(planner.plan(6, s.ring, {0, 0, 1}, hinted, cost, true, OpenRing::Border, true, 1 + 2),
-            RejectCount);
+  ASSERT_EQ(a.plan(price, hinted, cost, 1 + 2), RejectCount);
   EXPECT_GT(estimates, 1);
   EXPECT_EQ(hinted.candidate, 1 + 3);
   EXPECT_TRUE(notch_fan(hinted));
+}
+
+// A candidate taken after one the mesh's other faces refused (an edge found elsewhere, which can
+// go while the ring stays) is no hint for the next plan; one after the ring's own refusals is.
+TEST(Vetoes, APlanAfterARefusalByTheMeshLeavesNoHint) {
+  RingCase s;
+  s.mesh = vrs_test::concave_fan();
+  s.mesh.positions[3 * 6 + 2] = 0.3f;
+  s.mesh.positions.insert(s.mesh.positions.end(), {0.0f, 1.0f, -5.0f});
+  s.mesh.triangles.insert(s.mesh.triangles.end(), {3u, 5u, 7u}); // the edge (3, 5) elsewhere
+  open_ring(s, 6);
+  ASSERT_EQ(s.ring.verts, 6);
+  Evaluator eval(Mode::Surface3D, {0, 0, 1}, s.mesh.positions.data());
+  RemovalLimits limits;
+  Pricer price{[](const void*, uint32_t, const Ring&, const Patch& p, double, bool& complete) {
+                 complete = true;
+                 return notch_fan(p) ? 0.0 : 1.0;
+               },
+               seven, nullptr};
+  Planner planner(eval, s.topo, s.mesh.triangles.data(), s.normals.data(), limits, price, true);
+  Patch out;
+  double cost = 0;
+  // Priced without the mesh's look-ups, the notch's fan is taken and is a hint.
+  ASSERT_EQ(planner.plan(6, s.ring, {0, 0, 1}, out, cost, false), RejectCount);
+  EXPECT_TRUE(notch_fan(out));
+  EXPECT_EQ(out.candidate, 1 + 3);
+  // With them, its diagonal (3, 5) exists: another is taken, and is no hint.
+  ASSERT_EQ(planner.plan(6, s.ring, {0, 0, 1}, out, cost), RejectCount);
+  EXPECT_FALSE(notch_fan(out));
+  EXPECT_EQ(out.candidate, kNoCandidate);
 }
