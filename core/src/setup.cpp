@@ -122,8 +122,10 @@ void Simplifier::first_prices(UninitVector<uint8_t>& kinds, UninitVector<FirstPr
   // The normal cones and fan areas vertex by vertex on the workers (summed face by face on
   // one thread, they were a fifth of the run's serial part).
   normals_.resize(4 * n);
-  if (lazy_) fan_area_.resize(n);
-  if (lazy_) fill_on(&workers_, chosen_, n, kNoCandidate);
+  if (lazy_) {
+    fan_area_.resize(n);
+    fill_on(&workers_, chosen_, n, kNoCandidate);
+  }
   workers_.for_each(
       n,
       [&](size_t v) {
