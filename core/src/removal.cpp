@@ -95,7 +95,8 @@ Reject Planner::plan(uint32_t v, const Ring& ring, Vec3 n, Patch& out, double& c
   const int candidates = candidate_count(ring, fans_);
   // A candidate is a hint for the next plan of the same ring only if every one ranked before it
   // was refused for the ring's own sake: an edge or a triangle found elsewhere in the mesh can
-  // go while the ring stays as it is.
+  // go while the ring stays as it is (the topology veto's two reasons; a veto that asks the
+  // mesh beyond the ring must be counted here too).
   bool refused_by_mesh = false;
   auto accept = [&](int c) {
     out.candidate = refused_by_mesh ? kNoCandidate : uint8_t(c);
