@@ -29,7 +29,7 @@ void Simplifier::rewrite(Planned& p) {
   p.overflows = 0;
   for (int i = 0; i < ring.faces; ++i) {
     uint32_t f = ring.f[i];
-    face_source_[f] = kRemoved;
+    order_.face_old[f] |= kRewrittenSlot;
     if (i < patch.count && !face_bound_.empty()) face_bound_[f] = patch.bound[i];
     if (i < patch.count && !corner_source_.empty())
       for (int c = 0; c < 3; ++c)

@@ -3,6 +3,7 @@
 #include <cmath>
 #include <cstdint>
 
+#include "spatial_order.h"
 #include "topology.h"
 
 namespace vrs {
@@ -56,7 +57,8 @@ std::string check_mesh(const Mesh& m) {
   if (m.triangles.size() % 3 != 0) return "triangles size is not a multiple of 3";
   const size_t n = m.vertex_count();
   if (n >= kNone) return "too many vertices (" + std::to_string(n) + ")";
-  if (m.triangles.size() / 3 >= kNone) return "too many triangles";
+  if (m.triangles.size() / 3 >= kRewrittenSlot)
+    return "too many triangles (" + std::to_string(m.triangles.size() / 3) + "; at most 2^31 - 1)";
   for (size_t i = 0; i < m.triangles.size(); ++i)
     if (m.triangles[i] >= n)
       return "triangle " + std::to_string(i / 3) + " has vertex index " +

@@ -80,32 +80,38 @@ void InputSurface::build_now(const Evaluator& eval) const {
   if (faces == 0) return;
   mean_area_ /= double(faces);
   order_faces(eval);
-  std::vector<Box> level((faces + kLeaf - 1) / kLeaf);
-  for (size_t l = 0; l < level.size(); ++l) {
-    Box& b = level[l];
-    std::fill(b.lo, b.lo + 3, std::numeric_limits<float>::infinity());
-    std::fill(b.hi, b.hi + 3, -std::numeric_limits<float>::infinity());
-    for (size_t f = l * kLeaf; f < std::min(faces, (l + 1) * kLeaf); ++f)
-      for (int c = 0; c < 3; ++c) {
-        const Vec3 p = eval.position(tris_[3 * f + c]);
-        const float x[3] = {float(p.x), float(p.y), float(p.z)}; // positions are floats
-        for (int a = 0; a < 3; ++a)
-          b.lo[a] = std::min(b.lo[a], x[a]), b.hi[a] = std::max(b.hi[a], x[a]);
-      }
-  }
-  levels_.push_back(std::move(level));
-  while (levels_.back().size() > 1) {
-    const std::vector<Box>& below = levels_.back();
-    std::vector<Box> up((below.size() + 1) / 2);
+  leaves_ = (faces + kLeaf - 1) / kLeaf;
+  levels_.emplace_back(); // the leaves' boxes: made from their faces when read (leaf_box)
+  size_t below = leaves_;
+  while (below > 1) {
+    std::vector<Box> up((below + 1) / 2);
     for (size_t i = 0; i < up.size(); ++i) {
-      up[i] = below[2 * i];
-      if (2 * i + 1 < below.size())
+      up[i] = node_box(levels_.size() - 1, 2 * i, eval);
+      if (2 * i + 1 < below) {
+        const Box b = node_box(levels_.size() - 1, 2 * i + 1, eval);
         for (int a = 0; a < 3; ++a)
-          up[i].lo[a] = std::min(up[i].lo[a], below[2 * i + 1].lo[a]),
-          up[i].hi[a] = std::max(up[i].hi[a], below[2 * i + 1].hi[a]);
+          up[i].lo[a] = std::min(up[i].lo[a], b.lo[a]),
+          up[i].hi[a] = std::max(up[i].hi[a], b.hi[a]);
+      }
     }
+    below = up.size();
     levels_.push_back(std::move(up));
   }
+}
+
+InputSurface::Box InputSurface::leaf_box(size_t leaf, const Evaluator& eval) const {
+  Box b;
+  std::fill(b.lo, b.lo + 3, std::numeric_limits<float>::infinity());
+  std::fill(b.hi, b.hi + 3, -std::numeric_limits<float>::infinity());
+  const size_t faces = tris_.size() / 3;
+  for (size_t f = leaf * kLeaf; f < std::min(faces, (leaf + 1) * kLeaf); ++f)
+    for (int c = 0; c < 3; ++c) {
+      const Vec3 p = eval.position(tris_[3 * f + c]);
+      const float x[3] = {float(p.x), float(p.y), float(p.z)}; // positions are floats
+      for (int a = 0; a < 3; ++a)
+        b.lo[a] = std::min(b.lo[a], x[a]), b.hi[a] = std::max(b.hi[a], x[a]);
+    }
+  return b;
 }
 
 double InputSurface::box_distance2(const Box& b, Vec3 x) const {
@@ -122,17 +128,26 @@ bool InputSurface::nearest(Vec3 x, const Evaluator& eval, double& d2, Vec3& norm
   if (levels_.empty()) return false;
   double best = std::numeric_limits<double>::infinity();
   size_t best_face = 0;
-  // Depth-first, nearer child first; a node is (level, index). The depth is log2 of the
-  // leaves: 64 entries hold any mesh.
-  std::array<std::pair<uint8_t, uint32_t>, 64> stack;
+  // Depth-first, nearer child first; a node is (level, index) with its box's distance, measured
+  // once (a leaf's box is made from its faces). The depth is log2 of the leaves: 64 entries
+  // hold any mesh.
+  struct Node {
+    uint8_t level;
+    uint32_t index;
+    double d2;
+  };
+  std::array<Node, 64> stack;
   int top = 0;
-  stack[top++] = {uint8_t(levels_.size() - 1), 0u};
+  const uint8_t root = uint8_t(levels_.size() - 1);
+  stack[top++] = {root, 0u, box_distance2(node_box(root, 0, eval), x)};
   while (top > 0) {
-    const auto [level, index] = stack[--top];
-    if (box_distance2(levels_[level][index], x) >= best) continue;
+    const Node node = stack[--top];
+    if (node.d2 >= best) continue;
+    const uint8_t level = node.level;
     if (level == 0) {
       const size_t faces = tris_.size() / 3;
-      for (size_t f = size_t(index) * kLeaf; f < std::min(faces, size_t(index + 1) * kLeaf); ++f) {
+      for (size_t f = size_t(node.index) * kLeaf;
+           f < std::min(faces, size_t(node.index + 1) * kLeaf); ++f) {
         const double d = point_triangle_distance2(x, eval.position(tris_[3 * f]),
                                                   eval.position(tris_[3 * f + 1]),
                                                   eval.position(tris_[3 * f + 2]));
@@ -140,20 +155,21 @@ bool InputSurface::nearest(Vec3 x, const Evaluator& eval, double& d2, Vec3& norm
       }
       continue;
     }
-    const std::vector<Box>& below = levels_[level - 1];
-    const uint32_t a = 2 * index, b = 2 * index + 1;
-    if (b >= below.size()) {
-      stack[top++] = {uint8_t(level - 1), a};
+    const uint8_t down = uint8_t(level - 1);
+    const uint32_t a = 2 * node.index, b = 2 * node.index + 1;
+    const double da = box_distance2(node_box(down, a, eval), x);
+    if (b >= node_count(down)) {
+      stack[top++] = {down, a, da};
       continue;
     }
-    const double da = box_distance2(below[a], x), db = box_distance2(below[b], x);
+    const double db = box_distance2(node_box(down, b, eval), x);
     // The nearer one is popped first.
     if (da <= db) {
-      if (db < best) stack[top++] = {uint8_t(level - 1), b};
-      if (da < best) stack[top++] = {uint8_t(level - 1), a};
+      if (db < best) stack[top++] = {down, b, db};
+      if (da < best) stack[top++] = {down, a, da};
     } else {
-      if (da < best) stack[top++] = {uint8_t(level - 1), a};
-      if (db < best) stack[top++] = {uint8_t(level - 1), b};
+      if (da < best) stack[top++] = {down, a, da};
+      if (db < best) stack[top++] = {down, b, db};
     }
   }
   if (!(best < std::numeric_limits<double>::infinity())) return false;
@@ -175,7 +191,7 @@ bool InputSurface::any_agrees(Vec3 x, double r2, Vec3 n, const Evaluator& eval) 
   const size_t faces = tris_.size() / 3;
   while (top > 0) {
     const auto [level, index] = stack[--top];
-    if (box_distance2(levels_[level][index], x) > r2) continue;
+    if (box_distance2(node_box(level, index, eval), x) > r2) continue;
     if (level == 0) {
       for (size_t f = size_t(index) * kLeaf; f < std::min(faces, size_t(index + 1) * kLeaf); ++f)
         if (dot(face_normal(f, eval), n) > 0 &&
@@ -185,7 +201,7 @@ bool InputSurface::any_agrees(Vec3 x, double r2, Vec3 n, const Evaluator& eval) 
           return true;
       continue;
     }
-    const size_t below = levels_[level - 1].size();
+    const size_t below = node_count(level - 1);
     if (2 * index + 1 < below) stack[top++] = {uint8_t(level - 1), 2 * index + 1};
     stack[top++] = {uint8_t(level - 1), 2 * index};
   }

@@ -55,6 +55,13 @@ class InputSurface {
     float lo[3], hi[3];
   };
   double box_distance2(const Box& b, Vec3 x) const;
+  // A leaf's box from its faces' corners: not stored, as the leaves' boxes were half the
+  // hierarchy's memory (6 bytes an input face) and the peak of runs that build it.
+  Box leaf_box(size_t leaf, const Evaluator& eval) const;
+  Box node_box(size_t level, size_t i, const Evaluator& eval) const {
+    return level ? levels_[level][i] : leaf_box(i, eval);
+  }
+  size_t node_count(size_t level) const { return level ? levels_[level].size() : leaves_; }
   void order_faces(const Evaluator& eval) const; // the leaves' order, a median split at each level
   // Whether any face within sqrt(r2) of x has a normal with a positive dot product with n.
   bool any_agrees(Vec3 x, double r2, Vec3 n, const Evaluator& eval) const;
@@ -64,9 +71,12 @@ class InputSurface {
   // under build_once_, before any reader sees them.
   void build_now(const Evaluator& eval) const;
   mutable std::once_flag build_once_;
-  mutable UninitVector<uint32_t> tris_;          // 3 a face, faces with area only
-  mutable double mean_area_ = 0;                 // of the input's faces with area
-  mutable std::vector<std::vector<Box>> levels_; // levels_[0]: one box per leaf; the last: the root
+  mutable UninitVector<uint32_t> tris_; // 3 a face, faces with area only
+  mutable double mean_area_ = 0;        // of the input's faces with area
+  mutable size_t leaves_ = 0;
+  // levels_[l]: the boxes of level l, each over two of the level below (levels_[0] is empty:
+  // the leaves', made when read); the last: the root.
+  mutable std::vector<std::vector<Box>> levels_;
 };
 
 } // namespace vrs

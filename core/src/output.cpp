@@ -33,7 +33,7 @@ void write_output(Mesh& mesh, const SpatialOrder& order, const std::vector<uint8
                   const SlotRecords& records, Report& rep, Workers* workers) {
   const size_t n = mesh.vertex_count();
   auto& pos = mesh.positions;
-  const auto& face_source = records.face_source;
+  const auto& kept_faces = records.kept_faces;
   const auto& corner_source = records.corner_source;
   const auto& face_bound = records.face_bound;
   rep.remap.assign(n, kRemoved);
@@ -58,7 +58,7 @@ void write_output(Mesh& mesh, const SpatialOrder& order, const std::vector<uint8
   std::vector<uint32_t> slot_of(slots); // input slot -> internal slot
   for_each_block(workers, slots, kBlock, [&](size_t begin, size_t end) {
     for (size_t f = begin; f < end; ++f)
-      slot_of[order.face_old[f]] = uint32_t(f);
+      slot_of[order.face_old[f] & ~kRewrittenSlot] = uint32_t(f);
   });
   const auto fstarts =
       block_starts(workers, slots, [&](size_t j) { return tris[3 * size_t(slot_of[j])] != kNone; });
@@ -73,7 +73,10 @@ void write_output(Mesh& mesh, const SpatialOrder& order, const std::vector<uint8
     for (size_t j = begin; j < end; ++j) {
       const size_t f = slot_of[j];
       if (tris[3 * f] == kNone) continue;
-      rep.face_source[at] = face_source[f];
+      const uint32_t old = order.face_old[f];
+      rep.face_source[at] = old & kRewrittenSlot ? kRemoved
+                            : kept_faces.empty() ? old
+                                                 : kept_faces[old];
       if (!face_bound.empty()) bound[b] = std::max(bound[b], face_bound[f]);
       if (!corner_source.empty()) std::copy_n(&corner_source[3 * f], 3, &rep.corner_source[3 * at]);
       for (int c = 0; c < 3; ++c) {
@@ -137,7 +140,7 @@ void Simplifier::compact() {
   for (size_t i = 0; i < welding_.rep.size(); ++i)
     removed[order_.vertex_new[i]] = removed[order_.vertex_new[welding_.rep[i]]];
   write_output(mesh_, order_, removed,
-               {face_source_, corner_source_, face_bound_, welding_.corners, welding_.rep, turned_},
+               {kept_faces_, corner_source_, face_bound_, welding_.corners, welding_.rep, turned_},
                rep_, &workers_);
   if (!opt_.corner_sources) std::vector<uint32_t>().swap(rep_.corner_source);
 }

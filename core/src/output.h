@@ -12,10 +12,11 @@
 
 namespace vrs {
 
-// What the run kept per face slot (internal order): the input face (kRemoved: rewritten), the
-// input corner each corner carries (empty: not asked), the certified bound (empty: none).
+// What the run kept per face slot (internal order; its input slot and whether it was rewritten
+// are SpatialOrder::face_old's): the input face of each input slot (empty: the slot's own),
+// the input corner each corner carries (empty: not asked), the certified bound (empty: none).
 struct SlotRecords {
-  const UninitVector<uint32_t>& face_source;
+  const UninitVector<uint32_t>& kept_faces;
   const std::vector<uint32_t>& corner_source;
   const std::vector<float>& face_bound;
   // Split vertices welded for the run (split_vertices.h; empty: none): each input corner's

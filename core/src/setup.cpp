@@ -217,17 +217,21 @@ void Simplifier::prepare() {
     rep_.welded_vertices = welding_.welded;
   }
   auto standing = [&](uint32_t v) { return welding_.rep.empty() ? v : welding_.rep[v]; };
+  // Per face slot, its input face: for the set-up only (the run reads it off order_.face_old
+  // and kept_faces_).
+  UninitVector<uint32_t> face_source;
   rep_.dropped_degenerate_faces =
-      drop_repeated_corner_faces(mesh_.triangles, face_source_, &workers_);
+      drop_repeated_corner_faces(mesh_.triangles, face_source, &workers_);
   // Inside, vertices and faces go in spatial order (compact() restores the input's).
   order_ = spatial_order(mesh_.positions, mesh_.triangles, &workers_);
   {
-    UninitVector<uint32_t> source(face_source_.size());
+    UninitVector<uint32_t> source(face_source.size());
     for_each_block(&workers_, source.size(), 65536, [&](size_t begin, size_t end) {
       for (size_t f = begin; f < end; ++f)
-        source[f] = face_source_[order_.face_old[f]];
+        source[f] = face_source[order_.face_old[f]];
     });
-    face_source_.swap(source);
+    if (rep_.dropped_degenerate_faces) kept_faces_.swap(face_source);
+    face_source.swap(source);
   }
   flags_.assign(n, uint8_t(RejectCount << kRefusedShift)); // refused by nothing yet
   if (opt_.locked) // a locked copy locks the copy standing for it
@@ -249,22 +253,21 @@ void Simplifier::prepare() {
   // non-manifold.
   std::vector<uint8_t> reversed;
   rep_.reoriented_faces =
-      orient_coherently(mesh_.triangles, topo_, face_source_.data(), reversed, &workers_);
+      orient_coherently(mesh_.triangles, topo_, face_source.data(), reversed, &workers_);
   TurnedByWelding turned;
   if (welding_.same_way) {
     // Pieces of split vertices written in different orientations agree for the run only: the
     // output gives each face the orientation of the input faces it stands for.
     std::vector<uint32_t> apart(t.size());
-    for (size_t f = 0; f < face_source_.size(); ++f)
+    for (size_t f = 0; f < face_source.size(); ++f)
       for (int c = 0; c < 3; ++c)
-        apart[3 * f + c] = order_.vertex_new[welding_.corners[3 * size_t(face_source_[f]) + c]];
-    turned =
-        turned_by_welding(t, topo_, reversed, std::move(apart), face_source_.data(), &workers_);
+        apart[3 * f + c] = order_.vertex_new[welding_.corners[3 * size_t(face_source[f]) + c]];
+    turned = turned_by_welding(t, topo_, reversed, std::move(apart), face_source.data(), &workers_);
     if (!turned.faces.empty()) {
-      turned_.assign(face_source_.size() + rep_.dropped_degenerate_faces, 0); // by input face
+      turned_.assign(face_source.size() + rep_.dropped_degenerate_faces, 0); // by input face
       rep_.reoriented_faces = 0; // those the output holds reversed
-      for (size_t f = 0; f < face_source_.size(); ++f) {
-        turned_[face_source_[f]] = turned.faces[f];
+      for (size_t f = 0; f < face_source.size(); ++f) {
+        turned_[face_source[f]] = turned.faces[f];
         rep_.reoriented_faces += (!reversed.empty() && reversed[f]) != turned.faces[f];
       }
     }
@@ -287,11 +290,12 @@ void Simplifier::prepare() {
   }
   if (opt_.corner_sources || !welding_.rep.empty()) { // welded: output corners take copies
     corner_source_.resize(t.size());
-    for (size_t f = 0; f < face_source_.size(); ++f)
+    for (size_t f = 0; f < face_source.size(); ++f)
       for (int c = 0; c < 3; ++c)
         corner_source_[3 * f + c] =
-            3 * face_source_[f] + (reversed.empty() || !reversed[f] || !c ? c : 3 - c);
+            3 * face_source[f] + (reversed.empty() || !reversed[f] || !c ? c : 3 - c);
   }
+  UninitVector<uint32_t>().swap(face_source);
   UninitVector<uint8_t> kinds;
   UninitVector<FirstPrice> first;
   first_prices(kinds, first);

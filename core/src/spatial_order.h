@@ -12,10 +12,14 @@
 namespace vrs {
 
 struct SpatialOrder {                // written whole by the workers (not zero-filled first)
-  UninitVector<uint32_t> vertex_old; // new vertex index -> input index
   UninitVector<uint32_t> vertex_new; // input vertex index -> new index
-  UninitVector<uint32_t> face_old;   // new face slot -> input slot
+  UninitVector<uint32_t> face_old;   // new face slot -> input slot (| kRewrittenSlot)
 };
+
+// In face_old: the slot's face was rewritten by the run (a face the re-triangulation made).
+// Kept there, not in an array of its own (4 bytes an input face less at the run's peak); the
+// input's faces are fewer than 2^31 (input_check.cpp).
+constexpr uint32_t kRewrittenSlot = 0x80000000u;
 
 // Renumbers `positions` (3 a vertex) and `triangles` in place (same buffers): vertices by the
 // Morton code of their position in the bounding box of the finite ones (non-finite ones last, ties

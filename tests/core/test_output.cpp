@@ -14,14 +14,13 @@ struct Case {
   Mesh mesh;
   SpatialOrder order;
   std::vector<uint8_t> removed{0, 0, 1, 0, 0};
-  UninitVector<uint32_t> face_source{2, kRemoved, 0};
+  UninitVector<uint32_t> kept_faces; // none dropped: each slot its own input face
   std::vector<uint32_t> corner_source{6, 7, 8, 0, 0, 0, 0, 1, 2};
   std::vector<float> face_bound{0.5f, 0.f, 0.25f};
   Case() {
     for (int v = 0; v < 5; ++v) // internal v holds input 4 - v's position
       mesh.positions.insert(mesh.positions.end(), {float(4 - v), 0.f, float(v)});
     mesh.triangles = {0, 1, 3, kNone, kNone, kNone, 4, 3, 1};
-    order.vertex_old = {4, 3, 2, 1, 0};
     order.vertex_new = {4, 3, 2, 1, 0};
     order.face_old = {2, 1, 0};
   }
@@ -35,8 +34,7 @@ TEST(Output, VerticesAndFacesReturnToTheInputOrderWithTheirSources) {
   const std::vector<uint32_t> unwelded;
   const std::vector<uint8_t> none_turned;
   write_output(c.mesh, c.order, c.removed,
-               {c.face_source, c.corner_source, c.face_bound, unwelded, unwelded, none_turned},
-               rep);
+               {c.kept_faces, c.corner_source, c.face_bound, unwelded, unwelded, none_turned}, rep);
   ASSERT_EQ(rep.vertices, 4u);
   ASSERT_EQ(rep.faces, 2u);
   // Inputs 0, 1, 3, 4 survive, in that order, with their own positions.
@@ -56,11 +54,26 @@ TEST(Output, WithoutCornerSourcesOrBoundsNoneIsReported) {
   const std::vector<uint32_t> none;
   const std::vector<float> no_bound;
   const std::vector<uint8_t> none_turned;
-  write_output(c.mesh, c.order, c.removed, {c.face_source, none, no_bound, none, none, none_turned},
+  write_output(c.mesh, c.order, c.removed, {c.kept_faces, none, no_bound, none, none, none_turned},
                rep);
   EXPECT_TRUE(rep.corner_source.empty());
   EXPECT_EQ(rep.error_bound, 0.0);
   EXPECT_EQ(rep.face_source.size(), 2u);
+}
+
+TEST(Output, ARewrittenSlotHasNoSourceAndTheOthersTheFaceTheDropKept) {
+  Case c;
+  c.order.face_old[0] |= kRewrittenSlot; // internal slot 0 (input slot 2) made by the run
+  c.kept_faces = {3, 5, 6};              // input face 4 was dropped before the run
+  Report rep;
+  const std::vector<uint32_t> none;
+  const std::vector<float> no_bound;
+  const std::vector<uint8_t> none_turned;
+  write_output(c.mesh, c.order, c.removed, {c.kept_faces, none, no_bound, none, none, none_turned},
+               rep);
+  // Still in the input slots' order: slot 0 (internal 2), then slot 2 (internal 0).
+  EXPECT_EQ(c.mesh.triangles, (std::vector<uint32_t>{0, 1, 2, 3, 2, 1}));
+  EXPECT_EQ(rep.face_source, (std::vector<uint32_t>{3, kRemoved}));
 }
 
 TEST(Output, InputWarningsNameEachProblemWorkedAround) {
