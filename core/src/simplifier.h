@@ -222,7 +222,8 @@ class Simplifier {
   size_t flip_refused_ = 0; // vertices whose last plan a corner's input normal refused
   Reject refused(uint32_t v) const { return Reject((flags_[v] & kRefusedMask) >> kRefusedShift); }
   // Per face slot after the drop of faces with a repeated corner: its input face (empty: none
-  // dropped, each its own). A slot's input face is this of order_.face_old's unless rewritten.
+  // dropped, each its own). The run's slot f stands for kept_faces_[order_.face_old[f]] until
+  // rewritten (kRewrittenSlot).
   UninitVector<uint32_t> kept_faces_;
   std::vector<uint32_t> corner_source_; // per face slot corner: the input corner it carries
   std::vector<float> face_bound_;       // per face slot: its certified error bound (max_error)
