@@ -103,6 +103,8 @@ bool run_method(const std::string& method, const vrs::Mesh& in, size_t target,
         o.threads = std::atoi(p.c_str() + 1);
       else if (p == "eager")
         o.lazy_reevaluation = false;
+      else if (p == "lazy") // lazy whatever the size (the default is eager on small meshes)
+        o.lazy_from_faces = 0;
       else if (p == "bound") // track the certified error bound, no limit
         o.max_error = std::numeric_limits<double>::infinity();
       else if (p.rfind("fa", 0) == 0 && p.size() > 2 &&

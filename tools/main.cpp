@@ -50,8 +50,9 @@ const char* kUsage =
     "                                  fans (default) or with the paper's projection only\n"
     "  --mapping linear|log            factor -> interval mapping (default log)\n"
     "  --queue intervals|heap          hash table (default) or exact heap (reference)\n"
-    "  --reprice lazy|eager            a removal's queued neighbours are priced again when\n"
-    "                                  popped (default) or at once (the paper's way, slower)\n"
+    "  --reprice auto|lazy|eager       a removal's queued neighbours are priced again when\n"
+    "                                  popped (lazy) or at once (eager: the paper's way,\n"
+    "                                  slower); auto (default): eager under 20 000 faces\n"
     "  --threads N                     threads to plan removals on (default 0: all hardware\n"
     "                                  threads); the output is the same for every N\n"
     "  --simplify-boundary             also remove boundary vertices (default: kept, unless\n"
@@ -358,9 +359,11 @@ int main(int argc, char** argv) {
       if (!(v = value()) || !parse_double(v, opt.feature_angle_deg))
         return usage_error("--feature-angle needs degrees in [0, 180]");
     } else if (a == "--reprice") {
-      if (!(v = value()) || (std::strcmp(v, "lazy") && std::strcmp(v, "eager")))
-        return usage_error("--reprice must be lazy or eager");
-      opt.lazy_reevaluation = !std::strcmp(v, "lazy");
+      if (!(v = value()) ||
+          (std::strcmp(v, "auto") && std::strcmp(v, "lazy") && std::strcmp(v, "eager")))
+        return usage_error("--reprice must be auto, lazy or eager");
+      opt.lazy_reevaluation = std::strcmp(v, "eager") != 0;
+      opt.lazy_from_faces = !std::strcmp(v, "lazy") ? 0 : vrs::Options().lazy_from_faces;
     } else if (a == "--threads") {
       size_t n = 0;
       if (!(v = value()) || !parse_count(v, n) || n > 1024)

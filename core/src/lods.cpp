@@ -101,6 +101,11 @@ LodChain simplify_lods(const Mesh& input, std::vector<double> ratios, const Opti
     o.target.kind = TargetKind::Faces;
     o.target.faces = static_cast<size_t>(ratio * double(input.face_count()));
     o.corner_sources = corner_keys != nullptr || options.corner_sources;
+    // Every level priced as the input is (Options::lazy_from_faces), not by its own size.
+    if (input.face_count() >= options.lazy_from_faces)
+      o.lazy_from_faces = 0;
+    else
+      o.lazy_reevaluation = false;
     std::vector<uint32_t> edges = constrained;
     if (corner_keys) {
       std::vector<uint32_t> keys(corners.size());

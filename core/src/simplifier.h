@@ -190,8 +190,10 @@ class Simplifier {
   }
   bool simplify_boundary_ = opt_.simplify_boundary; // or on when the kept border needs it
   // Queued neighbours of a removal are re-priced when popped. The paper's factor is the plane
-  // alone, cheap to make at once: lazy only pays where the price is a plan.
-  const bool lazy_ = opt_.lazy_reevaluation && opt_.priority == Priority::LocalError;
+  // alone, cheap to make at once: lazy only pays where the price is a plan, and on a large
+  // mesh (Options::lazy_from_faces).
+  const bool lazy_ = opt_.lazy_reevaluation && opt_.priority == Priority::LocalError &&
+                     mesh_.face_count() >= opt_.lazy_from_faces;
   Topology topo_;
   Workers workers_{opt_.threads > 0 ? opt_.threads : hardware_threads()};
   std::vector<Planned> batch_;

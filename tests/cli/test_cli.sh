@@ -74,7 +74,8 @@ for args in "--faces 3000" "--vertices 2000" "--max-factor 0.0001" "--auto" "--a
   "--ratio 0.2 --mode planar" "--ratio 0.2 --simplify-boundary" "--ratio 0.2 --priority factor" \
   "--ratio 0.2 --priority local-error" "--max-factor 0.0001 --priority factor" \
   "--ratio 0.2 --fill projection" "--ratio 0.2 --fill best" "--ratio 0.2 --progress" \
-  "--ratio 0.2 --quiet" "--ratio 0.2 --reprice eager" "--ratio 0.2 --threads 1"; do
+  "--ratio 0.2 --quiet" "--ratio 0.2 --reprice eager" "--ratio 0.2 --reprice lazy" \
+  "--ratio 0.2 --reprice auto" "--ratio 0.2 --threads 1"; do
   # shellcheck disable=SC2086
   if "$bin" "$in" "$out/t.ply" $args --json >"$out/t.json" 2>"$out/err"; then
     f=$(json_num "$out/t.json" output_faces)
@@ -83,6 +84,13 @@ for args in "--faces 3000" "--vertices 2000" "--max-factor 0.0001" "--auto" "--a
     fail "$args: exit $?: $(cat "$out/err")"
   fi
 done
+# Re-pricing: fandisk (12 946 faces) is under the size from which the default prices lazily, so
+# the default run is the eager one and the lazy one differs.
+for r in auto lazy eager; do "$bin" "$in" "$out/reprice-$r.ply" --ratio 0.1 --reprice $r --quiet >/dev/null; done
+"$bin" "$in" "$out/reprice-default.ply" --ratio 0.1 --quiet >/dev/null
+cmp -s "$out/reprice-default.ply" "$out/reprice-eager.ply" && cmp -s "$out/reprice-auto.ply" "$out/reprice-eager.ply" &&
+  ! cmp -s "$out/reprice-lazy.ply" "$out/reprice-eager.ply" && ok ||
+  fail "--reprice: the default on a small mesh is not the eager run, or lazy is the same"
 # Progress: a line per 10 % on stderr with --progress (not a terminal here), none by default or
 # with --quiet.
 "$bin" "$in" "$out/t.ply" --ratio 0.2 --progress >/dev/null 2>"$out/progress"

@@ -86,37 +86,46 @@ TEST(Lods, LevelsNestAndEachIsAPrefixOfTheSharedOrder) {
 }
 
 TEST(Lods, EachLevelIsTheRunOfTheFinerLevel) {
-  // A level is exactly what simplify() makes of the finer level: the chain adds nothing.
-  const Mesh in = vrs_test::icosphere(4);
-  Options o;
-  o.threads = 1;
-  const LodChain chain = simplify_lods(in, {0.5, 0.2}, o);
-  ASSERT_TRUE(chain.ok);
-  // The two runs by hand, each level's faces in input vertex ids.
-  Options a = o;
-  a.target.kind = TargetKind::Faces;
-  std::vector<uint32_t> ids(in.vertex_count());
-  for (uint32_t v = 0; v < ids.size(); ++v)
-    ids[v] = v;
-  Mesh m = in;
-  for (size_t L = 0; L < 2; ++L) {
-    a.target.faces = size_t(chain.levels[L].ratio * double(in.face_count()));
-    const Report r = simplify(m, a);
-    std::vector<uint32_t> next(m.vertex_count());
-    for (size_t v = 0; v < r.remap.size(); ++v)
-      if (r.remap[v] != kRemoved) next[r.remap[v]] = ids[v];
-    ids = next;
-    std::vector<uint32_t> by_hand, chained;
-    for (uint32_t v : m.triangles)
-      by_hand.push_back(ids[v]);
-    for (uint32_t v : chain.levels[L].triangles)
-      chained.push_back(chain.vertices[v]);
-    EXPECT_EQ(chained, by_hand) << "level " << L;
+  // A level is exactly what simplify() makes of the finer level, priced as the input is
+  // (lazily from Options::lazy_from_faces on, even where a level is smaller): the chain adds
+  // nothing.
+  const Mesh in = vrs_test::icosphere(4); // 5120 faces; the first level 2560
+  for (size_t lazy_from : {size_t(4000), Options().lazy_from_faces}) {
+    Options o;
+    o.threads = 1;
+    o.lazy_from_faces = lazy_from;
+    const LodChain chain = simplify_lods(in, {0.5, 0.2}, o);
+    ASSERT_TRUE(chain.ok);
+    // The two runs by hand, each level's faces in input vertex ids.
+    Options a = o;
+    a.target.kind = TargetKind::Faces;
+    if (in.face_count() >= lazy_from)
+      a.lazy_from_faces = 0; // lazy
+    else
+      a.lazy_reevaluation = false; // eager
+    std::vector<uint32_t> ids(in.vertex_count());
+    for (uint32_t v = 0; v < ids.size(); ++v)
+      ids[v] = v;
+    Mesh m = in;
+    for (size_t L = 0; L < 2; ++L) {
+      a.target.faces = size_t(chain.levels[L].ratio * double(in.face_count()));
+      const Report r = simplify(m, a);
+      std::vector<uint32_t> next(m.vertex_count());
+      for (size_t v = 0; v < r.remap.size(); ++v)
+        if (r.remap[v] != kRemoved) next[r.remap[v]] = ids[v];
+      ids = next;
+      std::vector<uint32_t> by_hand, chained;
+      for (uint32_t v : m.triangles)
+        by_hand.push_back(ids[v]);
+      for (uint32_t v : chain.levels[L].triangles)
+        chained.push_back(chain.vertices[v]);
+      EXPECT_EQ(chained, by_hand) << "level " << L << ", lazy from " << lazy_from;
+    }
+    // Same run twice: same chain.
+    const LodChain again = simplify_lods(in, {0.5, 0.2}, o);
+    EXPECT_EQ(again.vertices, chain.vertices);
+    EXPECT_EQ(again.levels[1].triangles, chain.levels[1].triangles);
   }
-  // Same run twice: same chain.
-  const LodChain again = simplify_lods(in, {0.5, 0.2}, o);
-  EXPECT_EQ(again.vertices, chain.vertices);
-  EXPECT_EQ(again.levels[1].triangles, chain.levels[1].triangles);
 }
 
 TEST(Lods, SeamsOfCornerKeysAreKeptAtEveryLevel) {

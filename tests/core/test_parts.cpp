@@ -93,7 +93,8 @@ TEST(Parts, SameOutputWhateverTheThreadCountAndEveryInvariantKept) {
   for (const auto& c : cases)
     for (int variant = 0; variant < 5; ++variant) {
       Options o;
-      o.part_vertices = 64; // small parts: these meshes are cut into dozens
+      o.part_vertices = 64;  // small parts: these meshes are cut into dozens
+      o.lazy_from_faces = 0; // the parts run with lazy prices, here on small meshes too
       o.target.ratio = variant == 4 ? 0.01 : 0.1;
       o.corner_sources = true;
       if (variant == 1) o.simplify_boundary = true;
@@ -135,6 +136,7 @@ TEST(Parts, CancellingWhileThePartsRunLeavesAValidMeshTheSameOnAnyThreads) {
   for (int threads : {1, 2}) {
     Options o;
     o.part_vertices = 256;
+    o.lazy_from_faces = 0;
     o.target.ratio = 0.05;
     o.threads = threads;
     int calls = 0;

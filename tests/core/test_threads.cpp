@@ -59,7 +59,7 @@ TEST(Threads, SameOutputAndReportWhateverTheThreadCount) {
   const auto cases = vrs_test::comparison_meshes();
   ASSERT_GE(cases.size(), 5u) << "CGAL's data set is missing";
   for (const auto& c : cases)
-    for (int variant = 0; variant < 7; ++variant) {
+    for (int variant = 0; variant < 8; ++variant) {
       Options o;
       o.target.ratio = variant == 6 ? 0.01 : 0.1;
       o.corner_sources = true;
@@ -69,6 +69,7 @@ TEST(Threads, SameOutputAndReportWhateverTheThreadCount) {
       case 3: o.lazy_reevaluation = false; break;
       case 4: o.feature_angle_deg = 40; break;
       case 5: o.mode = c.name == "terrain" ? Mode::Terrain25D : Mode::Surface3D; break;
+      case 7: o.lazy_from_faces = 0; break; // lazy on these small meshes too
       default: break;
       }
       const Outcome one = run(c.mesh, o, 1);
@@ -156,6 +157,27 @@ TEST(Threads, ABadCountIsRefusedAndTheMeshLeftAlone) {
   }
 }
 
+// Small meshes are priced at once (Options::lazy_from_faces): the default run is the eager
+// one below the size and the lazy one from it on.
+TEST(Reevaluation, SmallMeshesArePricedAtOnceLargeOnesWhenPopped) {
+  const Mesh in = vrs_test::icosphere(4); // 5120 faces
+  auto run_with = [&](bool lazy, size_t lazy_from) {
+    Options o;
+    o.target.ratio = 0.1;
+    o.lazy_reevaluation = lazy;
+    o.lazy_from_faces = lazy_from;
+    Mesh m = in;
+    const Report r = simplify(m, o);
+    EXPECT_EQ(vrs_test::check_run(in, m, o, r), "");
+    return m;
+  };
+  const Mesh lazy = run_with(true, 0), eager = run_with(false, 0);
+  ASSERT_FALSE(vrs_test::same_bits(lazy, eager)); // else this test tells nothing
+  EXPECT_TRUE(vrs_test::same_bits(run_with(true, Options().lazy_from_faces), eager));
+  EXPECT_TRUE(vrs_test::same_bits(run_with(true, in.face_count() + 1), eager));
+  EXPECT_TRUE(vrs_test::same_bits(run_with(true, in.face_count()), lazy));
+}
+
 TEST(Reevaluation, LazyAndEagerBothKeepEveryInvariantAndReachTheTarget) {
   for (const char* name : {"elephant", "fandisk", "bunny00"}) {
     const std::string path = vrs_test::cgal_mesh(std::string(name) + ".off");
@@ -166,6 +188,7 @@ TEST(Reevaluation, LazyAndEagerBothKeepEveryInvariantAndReachTheTarget) {
         Options o;
         o.target.ratio = ratio;
         o.lazy_reevaluation = lazy;
+        o.lazy_from_faces = 0; // lazy means lazy here, whatever the size
         Mesh m = in;
         Report r = simplify(m, o);
         ASSERT_EQ(vrs_test::check_run(in, m, o, r), "") << name << (lazy ? " lazy" : " eager");

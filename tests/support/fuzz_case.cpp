@@ -48,8 +48,12 @@ FuzzCase decode_fuzz_case(const uint8_t* data, size_t size) {
   const uint8_t f0 = in.u8(), f1 = in.u8();
   o.target.kind = vrs::TargetKind((f0 & 7) % 5);
   // Kinds 5-7 (0-2 again) cut the mesh into parts of 64 vertices: simplification by parts
-  // on meshes the fuzzer makes (from 256 vertices).
-  if ((f0 & 7) >= 5) o.part_vertices = 64;
+  // on meshes the fuzzer makes (from 256 vertices), with lazy prices as parts need (the
+  // other kinds are priced eagerly, as small meshes are by default).
+  if ((f0 & 7) >= 5) {
+    o.part_vertices = 64;
+    o.lazy_from_faces = 0;
+  }
   o.mode = vrs::Mode(((f0 >> 3) & 3) % 3);
   // Mode bits 3 (a second surface mode): split vertices welded freely instead of as seams.
   if (((f0 >> 3) & 3) == 3) o.split_vertices = vrs::SplitVertices::Weld;
