@@ -96,16 +96,11 @@ LodChain simplify_lods(const Mesh& input, std::vector<double> ratios, const Opti
   std::vector<uint8_t> locked;
 
   for (double ratio : ratios) {
-    Options o = options;
+    Options o = priced_as_input(options, input.face_count());
     o.target = Target{};
     o.target.kind = TargetKind::Faces;
     o.target.faces = static_cast<size_t>(ratio * double(input.face_count()));
     o.corner_sources = corner_keys != nullptr || options.corner_sources;
-    // Every level priced as the input is (Options::lazy_from_faces), not by its own size.
-    if (input.face_count() >= options.lazy_from_faces)
-      o.lazy_from_faces = 0;
-    else
-      o.lazy_reevaluation = false;
     std::vector<uint32_t> edges = constrained;
     if (corner_keys) {
       std::vector<uint32_t> keys(corners.size());

@@ -171,6 +171,14 @@ template <class Queue> void Simplifier::run(Queue& queue) {
   if (opt_.progress && rep_.stop != StopReason::Cancelled) opt_.progress(1.0f);
 }
 
+Options priced_as_input(Options options, size_t input_faces) {
+  if (input_faces >= options.lazy_from_faces)
+    options.lazy_from_faces = 0; // lazy whatever the piece's size
+  else
+    options.lazy_reevaluation = false; // eager whatever the piece's size
+  return options;
+}
+
 Report simplify(Mesh& mesh, const Options& options) {
   Report rep;
   rep.input_vertices = mesh.vertex_count();

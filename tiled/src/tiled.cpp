@@ -6,6 +6,7 @@
 #include <cmath>
 #include <cstring>
 #include <fstream>
+#include <limits>
 #include <memory>
 #include <stdexcept>
 #include <vector>
@@ -378,12 +379,10 @@ void run_tile(const std::string& dir, int level, uint64_t tile, int lone_threads
   opt.simplify_boundary_when_needed = alone;
   const bool serial = s.count("serial") && s.at("serial") == "1";
   opt.threads = alone || serial ? std::max(0, lone_threads) : 1;
-  // Priced as the whole mesh is in core (lazy from Options::lazy_from_faces on), not by the
-  // tile's own size.
-  if (!s.count("input_faces") || state_number(s, "input_faces") >= double(opt.lazy_from_faces))
-    opt.lazy_from_faces = 0;
-  else
-    opt.lazy_reevaluation = false;
+  // Priced as the whole mesh is in core, not by the tile's size (an older work directory
+  // without the count: a mesh large enough to be tiled).
+  opt = vrs::priced_as_input(opt, s.count("input_faces") ? size_t(state_number(s, "input_faces"))
+                                                         : std::numeric_limits<size_t>::max());
   opt.locked = &locked;
   // Split vertices as the run was told at its start (an older work directory: seam).
   const std::string split = s.count("split") ? s.at("split") : "seam";

@@ -289,6 +289,11 @@ constexpr uint32_t kRemoved = 0xffffffffu;
 // left exactly as given. Deterministic: the same input and options give the same output.
 Report simplify(Mesh& mesh, const Options& options);
 
+// The options for a run on a piece of a larger input (a tile, a level of detail made from the
+// finer one): re-priced as the whole input would be in core (Options::lazy_from_faces read
+// against `input_faces`), not by the piece's own size.
+Options priced_as_input(Options options, size_t input_faces);
+
 // Length of the diagonal of the bounding box of the finite positions (0 when there is none):
 // the unit of relative errors (CLI --max-error E%, the plugin's MaxError, the benchmark).
 double bounding_box_diagonal(const Mesh& mesh);
