@@ -256,8 +256,10 @@ bool InputSurface::folds(const Patch& patch, const Evaluator& eval, double min_c
     // from there to each corner (four points, not the centroid alone: one missed folds the
     // benchmark then measured, 1 % p90 of the error ratio 2.40 against 2.04, 14 folded runs
     // against 5); L grows with the square root of how many input faces it covers, as four
-    // points missed folds on small outputs (tuning set, 1 % p90 1.86 -> 1.69; finer or
-    // larger grids no better; bench/ablation.md).
+    // points missed folds on small outputs (tuning set, 1 % p90 1.86 -> 1.69). About a point
+    // every two faces covered, up to 12 x 12 (not one every four, up to 6 x 6): folds of a
+    // tenth of a triangle between the coarser grid's points are seen (tuning set: runs > 1 %
+    // folded where QECD's are not 6 -> 4, the same time; bench/ablation.md).
     const double covers = 0.5 * length(area_normal) / mean_area_;
     if (covers < min_covers) continue;
     // Clamped before the conversion: a triangle 1e37 times the mean input face (the fuzzer)

@@ -38,8 +38,8 @@ class InputSurface {
   bool nearest(Vec3 x, const Evaluator& eval, double& d2, Vec3& normal) const;
 
   // Whether some new triangle of the patch turns more than 90 degrees from the input face
-  // nearest one of its sample points (its centroid and halfway from there to each corner; a
-  // grid of up to 36 points on a triangle that covers more than 16 input faces):
+  // nearest one of its sample points (its centroid and halfway from there to each corner; on
+  // a triangle over more input faces, about a point every two faces covered, up to 144):
   // a fold-over as the benchmark measures one, against the input itself. Where several input
   // faces are nearest (an edge, a crease), one agreeing is enough.
   // Triangles covering fewer than `min_covers` input faces (by area) are not asked, and the
@@ -49,8 +49,8 @@ class InputSurface {
 
  private:
   static constexpr int kLeaf = 4;
-  static constexpr double kGridPerSide = 0.5; // grid cells along a side per sqrt(faces covered)
-  static constexpr int kGridMax = 6;
+  static constexpr double kGridPerSide = 0.75; // grid cells along a side per sqrt(faces covered)
+  static constexpr int kGridMax = 12;
   struct Box {
     float lo[3], hi[3];
   };

@@ -150,6 +150,30 @@ TEST(InputSurface, ALargeTriangleIsJudgedAllOver) {
   }
 }
 
+// About a point every two input faces covered, up to 144: a fold smaller than a sixth of the
+// triangle's side, between the points of a 6 x 6 grid (the grid until 2026-11-28), is found.
+// Wuson and b9_mesh at 10 % and 1 % kept 1.1-1.6 % of their area folded that way, in
+// triangles over 8-21 input faces (bench/ablation.md).
+TEST(InputSurface, ATriangleOverHundredsOfFacesIsSampledOnAFineGrid) {
+  vrs::Mesh input = vrs_test::grid(40);
+  const double h = 0.3;
+  const vrs::Patch large = patch_of({0, 0, h}, {40, 0, h}, {0, 40, h}); // over 1600 faces
+  // A square of side 0.4 at z = h + 0.1 facing down, around (10/9, 10/9): a point of the
+  // 12 x 12 grid, 1.1 units from the nearest point of the 6 x 6 one.
+  const uint32_t base = uint32_t(input.vertex_count());
+  const float c = 10.0f / 9, r = 0.2f;
+  for (const auto& xy : {std::pair{c - r, c - r}, {c + r, c - r}, {c + r, c + r}, {c - r, c + r}})
+    input.positions.insert(input.positions.end(), {xy.first, xy.second, float(h + 0.1)});
+  input.triangles.insert(input.triangles.end(),
+                         {base, base + 2, base + 1, base, base + 3, base + 2});
+  const vrs::Evaluator eval = evaluator(input);
+  vrs::InputSurface surface;
+  surface.keep(input.triangles);
+  surface.build(eval);
+  EXPECT_TRUE(surface.folds(large, eval));
+  EXPECT_FALSE(surface.folds(large, eval, 0, 6)); // the coarser grid misses it
+}
+
 // A triangle past any grid (1e40 times the mean input face, as the fuzzer made one) is
 // sampled on the largest grid: the side is clamped before it becomes an int (UBSan: a side
 // of 6.5e18 converted was undefined).
@@ -207,14 +231,17 @@ TEST(InputSurface, AtAnyCostThePlateGoesFurther) {
 // for 242, the crest cut instead (mean error 0.0048 of the diagonal, max 0.075, 7.8 % of its
 // area facing against the input nearest it; `vrs_bench --compare`). In the eased passes the
 // input's nearest faces judge every new triangle, and the faces replaced no longer do: the
-// target, at 0.0034, max 0.041, 5.5 %.
-TEST(InputSurface, ThreadReachesItsTargetJudgedByTheInput) {
+// target, at 0.0034, max 0.041, 5.5 %. Sampled about a point every two input faces a triangle
+// covers (not four), the last removals' slivers turned over are seen: it stops at 254 faces,
+// within 5 % of the target, 4.2 % folded, and says why.
+TEST(InputSurface, ThreadComesNearItsTargetJudgedByTheInput) {
   const vrs::Mesh in = vrs_test::read_off(VRS_MESHES "/threaded-short.off");
   ASSERT_EQ(in.face_count(), 2424u);
   const RatioRun run(in, 0.1);
   const vrs::Report& r = run.report;
   ASSERT_TRUE(r.ok) << r.message;
-  EXPECT_TRUE(r.target_reached) << run.out.face_count() << " faces: " << r.stop_detail;
+  EXPECT_LE(run.out.face_count(), 242 * 1.05) << r.stop_detail;
+  EXPECT_TRUE(r.target_reached || !r.stop_detail.empty());
   EXPECT_GT(r.relaxed_removals, 0u); // the eased passes are what this is about
   EXPECT_EQ(vrs_test::count_fold_overs(in, run.out, r), 0u);
   EXPECT_EQ(vrs_test::check_run(in, run.out, run.options, r), "");
