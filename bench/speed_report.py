@@ -96,7 +96,11 @@ def targets(runs, faces, per_face, med):
         elif faces[mesh] < 100_000:
             row(f"{mesh}: 1 thread ÷ meshoptimizer", f"{one / mo:.2f}", "≤ 3.0", one / mo <= 3.0)
         m1, m2 = mb(mesh, "ours"), mb(mesh, "meshopt")
-        row(f"{mesh}: peak memory ÷ meshoptimizer's", f"{m1 / m2:.2f}", "≤ 1.0", m1 <= m2)
+        if faces[mesh] >= 300_000:  # the memory target starts there
+            row(f"{mesh}: peak memory ÷ meshoptimizer's", f"{m1 / m2:.2f}", "≤ 1.0", m1 <= m2)
+        else:
+            out.append(f"| {mesh}: peak memory ÷ meshoptimizer's | {m1 / m2:.2f} | "
+                       "none under 300 k faces | — |")
     if len(per_face) > 1 and per_face[0][2]["ours"] and per_face[-1][2]["ours"]:
         lo, hi = per_face[0], per_face[-1]
         growth = hi[2]["ours"] / lo[2]["ours"]
