@@ -30,6 +30,17 @@ vrs::Evaluator evaluator(const vrs::Mesh& m) {
   return vrs::Evaluator(vrs::Mode::Surface3D, {0, 0, 1}, m.positions.data());
 }
 
+// A square of side 2 * half around (cx, cy) at height z, facing down, appended to m.
+void add_overhang(vrs::Mesh& m, float cx, float cy, float half, float z) {
+  const uint32_t base = uint32_t(m.vertex_count());
+  for (const auto& xy : {std::pair{cx - half, cy - half},
+                         {cx + half, cy - half},
+                         {cx + half, cy + half},
+                         {cx - half, cy + half}})
+    m.positions.insert(m.positions.end(), {xy.first, xy.second, z});
+  m.triangles.insert(m.triangles.end(), {base, base + 2, base + 1, base, base + 3, base + 2});
+}
+
 // A run of `in` to `ratio` of its faces with the default options, into `out`.
 struct RatioRun {
   vrs::Mesh out;
@@ -130,11 +141,7 @@ TEST(InputSurface, ALargeTriangleIsJudgedAllOver) {
     EXPECT_FALSE(surface.folds(large, eval));
   }
   // The overhang: a square of side 1 at z = h + 0.1 around (2.2, 2.2), facing down.
-  const uint32_t base = uint32_t(input.vertex_count());
-  for (const auto& xy : {std::pair{1.7f, 1.7f}, {2.7f, 1.7f}, {2.7f, 2.7f}, {1.7f, 2.7f}})
-    input.positions.insert(input.positions.end(), {xy.first, xy.second, float(h + 0.1)});
-  input.triangles.insert(input.triangles.end(),
-                         {base, base + 2, base + 1, base, base + 3, base + 2});
+  add_overhang(input, 2.2f, 2.2f, 0.5f, float(h + 0.1));
   const vrs::Evaluator eval = evaluator(input);
   vrs::InputSurface surface;
   surface.keep(input.triangles);
@@ -160,12 +167,7 @@ TEST(InputSurface, ATriangleOverHundredsOfFacesIsSampledOnAFineGrid) {
   const vrs::Patch large = patch_of({0, 0, h}, {40, 0, h}, {0, 40, h}); // over 1600 faces
   // A square of side 0.4 at z = h + 0.1 facing down, around (10/9, 10/9): a point of the
   // 12 x 12 grid, 1.1 units from the nearest point of the 6 x 6 one.
-  const uint32_t base = uint32_t(input.vertex_count());
-  const float c = 10.0f / 9, r = 0.2f;
-  for (const auto& xy : {std::pair{c - r, c - r}, {c + r, c - r}, {c + r, c + r}, {c - r, c + r}})
-    input.positions.insert(input.positions.end(), {xy.first, xy.second, float(h + 0.1)});
-  input.triangles.insert(input.triangles.end(),
-                         {base, base + 2, base + 1, base, base + 3, base + 2});
+  add_overhang(input, 10.0f / 9, 10.0f / 9, 0.2f, float(h + 0.1));
   const vrs::Evaluator eval = evaluator(input);
   vrs::InputSurface surface;
   surface.keep(input.triangles);
