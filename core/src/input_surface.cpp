@@ -131,8 +131,8 @@ InputSurface::Box InputSurface::leaf_box(size_t leaf, const Evaluator& eval) con
   Box b;
   std::fill(b.lo, b.lo + 3, std::numeric_limits<float>::infinity());
   std::fill(b.hi, b.hi + 3, -std::numeric_limits<float>::infinity());
-  const size_t faces = tris_.size() / 3;
-  for (size_t f = leaf * kLeaf; f < std::min(faces, (leaf + 1) * kLeaf); ++f)
+  const auto [first, last] = faces_under(0, leaf);
+  for (size_t f = first; f < last; ++f)
     for (int c = 0; c < 3; ++c) {
       const Vec3 p = eval.position(tris_[3 * f + c]);
       const float x[3] = {float(p.x), float(p.y), float(p.z)}; // positions are floats
@@ -175,10 +175,8 @@ bool InputSurface::nearest(Vec3 x, const Evaluator& eval, double& d2, Vec3& norm
     // corners (a leaf's box is not stored), so they would save no memory traffic, only add
     // work (a third of the time where every box ties, at 1e38: fuzz/open/).
     if (level <= 1) {
-      const size_t faces = tris_.size() / 3;
-      const size_t leaves = level == 1 ? 2 : 1;
-      for (size_t f = size_t(node.index) * leaves * kLeaf;
-           f < std::min(faces, size_t(node.index + 1) * leaves * kLeaf); ++f) {
+      const auto [first, last] = faces_under(level, node.index);
+      for (size_t f = first; f < last; ++f) {
         const double d = point_triangle_distance2(x, eval.position(tris_[3 * f]),
                                                   eval.position(tris_[3 * f + 1]),
                                                   eval.position(tris_[3 * f + 2]));
@@ -219,13 +217,12 @@ bool InputSurface::any_agrees(Vec3 x, double r2, Vec3 n, const Evaluator& eval) 
   std::array<std::pair<uint8_t, uint32_t>, 64> stack;
   int top = 0;
   stack[top++] = {uint8_t(levels_.size() - 1), 0u};
-  const size_t faces = tris_.size() / 3;
   while (top > 0) {
     const auto [level, index] = stack[--top];
     if (box_distance2(node_box(level, index, eval), x) > r2) continue;
     if (level <= 1) { // a node over leaves: its faces at once, as in nearest()
-      const size_t span = (level == 1 ? 2 : 1) * kLeaf;
-      for (size_t f = size_t(index) * span; f < std::min(faces, size_t(index + 1) * span); ++f)
+      const auto [first, last] = faces_under(level, index);
+      for (size_t f = first; f < last; ++f)
         if (dot(face_normal(f, eval), n) > 0 &&
             point_triangle_distance2(x, eval.position(tris_[3 * f]),
                                      eval.position(tris_[3 * f + 1]),

@@ -6,8 +6,10 @@
 // 3.8 us a query on 1.2 M faces.)
 #pragma once
 
+#include <algorithm>
 #include <cstdint>
 #include <mutex>
+#include <utility>
 #include <vector>
 
 #include "evaluation.h"
@@ -62,6 +64,12 @@ class InputSurface {
     return level ? levels_[level][i] : leaf_box(i, eval);
   }
   size_t node_count(size_t level) const { return level ? levels_[level].size() : leaves_; }
+  // The faces [first, second) under a leaf (level 0) or a node over leaves (level 1): the
+  // searches read a node over leaves at once, as its leaves' boxes would read the same corners.
+  std::pair<size_t, size_t> faces_under(size_t level, size_t i) const {
+    const size_t span = (level ? 2 : 1) * size_t(kLeaf);
+    return {i * span, std::min(tris_.size() / 3, (i + 1) * span)};
+  }
   void order_faces(const Evaluator& eval) const; // the leaves' order, a median split at each level
   // Whether any face within sqrt(r2) of x has a normal with a positive dot product with n.
   bool any_agrees(Vec3 x, double r2, Vec3 n, const Evaluator& eval) const;
