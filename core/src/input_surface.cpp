@@ -9,6 +9,28 @@
 
 namespace vrs {
 
+void InputSurface::clamp_to_bulk(const std::function<Vec3(size_t)>& centroid, size_t faces,
+                                 double* lo, double* hi) {
+  if (faces < 8) return;
+  std::vector<float> x(faces); // before the centroids' 6 bytes a face: not a new peak
+  double q1[3], q3[3], width = 0;
+  for (int a = 0; a < 3; ++a) {
+    for (size_t f = 0; f < faces; ++f) {
+      const Vec3 c = centroid(f);
+      x[f] = float(a == 0 ? c.x : a == 1 ? c.y : c.z);
+    }
+    std::nth_element(x.begin(), x.begin() + faces / 4, x.end());
+    q1[a] = x[faces / 4];
+    std::nth_element(x.begin() + faces / 4, x.begin() + 3 * faces / 4, x.end());
+    q3[a] = x[3 * faces / 4];
+    width = std::max(width, q3[a] - q1[a]);
+  }
+  if (!(width > 0) || !std::isfinite(width)) return;
+  for (int a = 0; a < 3; ++a)
+    lo[a] = std::max(lo[a], q1[a] - kBulkSpan * width),
+    hi[a] = std::min(hi[a], q3[a] + kBulkSpan * width);
+}
+
 void InputSurface::order_faces(const Evaluator& eval) const {
   // Top-down median splits on the centroids' widest axis, into the implicit layout the levels
   // read: a node of 2^l leaf slots gives its left child exactly 2^(l-1) * kLeaf faces (or all
@@ -30,6 +52,7 @@ void InputSurface::order_faces(const Evaluator& eval) const {
     for (int a = 0; a < 3; ++a)
       lo[a] = std::min(lo[a], x[a]), hi[a] = std::max(hi[a], x[a]);
   }
+  clamp_to_bulk(centroid, faces, lo, hi);
   const double extent = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
   const double scale = extent > 0 && std::isfinite(extent) ? 65535.0 / extent : 0.0;
   std::vector<std::array<uint16_t, 3>> centre(faces);
@@ -152,10 +175,17 @@ double InputSurface::box_distance2(const Box& b, Vec3 x) const {
   return d2;
 }
 
-bool InputSurface::nearest(Vec3 x, const Evaluator& eval, double& d2, Vec3& normal) const {
+bool InputSurface::nearest(Vec3 x, const Evaluator& eval, double& d2, Vec3& normal,
+                           size_t* hint) const {
   if (levels_.empty()) return false;
   double best = std::numeric_limits<double>::infinity();
   size_t best_face = 0;
+  if (hint && *hint != kNoFace) {
+    best_face = *hint;
+    best = point_triangle_distance2(x, eval.position(tris_[3 * best_face]),
+                                    eval.position(tris_[3 * best_face + 1]),
+                                    eval.position(tris_[3 * best_face + 2]));
+  }
   // Depth-first, nearer child first; a node is (level, index) with its box's distance, measured
   // once. The depth is log2 of the leaves: 64 entries hold any mesh.
   struct Node {
@@ -202,6 +232,7 @@ bool InputSurface::nearest(Vec3 x, const Evaluator& eval, double& d2, Vec3& norm
     }
   }
   if (!(best < std::numeric_limits<double>::infinity())) return false;
+  if (hint) *hint = best_face;
   normal = face_normal(best_face, eval);
   d2 = best;
   return true;
@@ -240,10 +271,11 @@ bool InputSurface::any_agrees(Vec3 x, double r2, Vec3 n, const Evaluator& eval) 
 bool InputSurface::folds(const Patch& patch, const Evaluator& eval, double min_covers,
                          int max_side) const {
   build(eval);
+  size_t hint = kNoFace; // the sample points are asked in order, each near the one before
   auto turned_at = [&](Vec3 x, Vec3 n) {
     double d2;
     Vec3 nearest_normal;
-    if (!nearest(x, eval, d2, nearest_normal) || dot(nearest_normal, n) > 0) return false;
+    if (!nearest(x, eval, d2, nearest_normal, &hint) || dot(nearest_normal, n) > 0) return false;
     // Ties (an input edge or crease nearest): measured again with a hair of slack.
     const double r2 = d2 * (1 + 1e-6) + 1e-24;
     return !any_agrees(x, r2, n, eval);

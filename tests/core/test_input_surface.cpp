@@ -62,6 +62,7 @@ TEST(InputSurface, NearestFaceIsTheOneABruteForceSearchFinds) {
     input.build(eval);
     std::mt19937 rng(7);
     std::uniform_real_distribution<double> u(-2, 8);
+    size_t hint = vrs::InputSurface::kNoFace;
     for (int i = 0; i < 500; ++i) {
       const Vec3 x{u(rng), u(rng), u(rng) * 0.3};
       double best = std::numeric_limits<double>::infinity();
@@ -74,6 +75,83 @@ TEST(InputSurface, NearestFaceIsTheOneABruteForceSearchFinds) {
       ASSERT_TRUE(input.nearest(x, eval, d2, n));
       EXPECT_NEAR(d2, best, 1e-9 * (1 + best)) << "point " << i;
       EXPECT_NEAR(vrs::length(n), 1.0, 1e-9);
+      // Started from the face found for the point before (anywhere else): the same distance.
+      ASSERT_TRUE(input.nearest(x, eval, d2, n, &hint));
+      EXPECT_NE(hint, vrs::InputSurface::kNoFace);
+      EXPECT_NEAR(d2, best, 1e-9 * (1 + best)) << "point " << i << ", from a hint";
+    }
+  }
+}
+
+// A few vertices at 1e30 (needles from the plate out to them, as the fuzzer makes) leave the
+// answers exact, and the range the hierarchy resolves is the plate's, not the needles'.
+TEST(InputSurface, FarVerticesLeaveTheNearestFaceExact) {
+  vrs::Mesh m = vrs_test::plate_with_holes(7, 5, {{2, 2}, {4, 2}}, 0.3f, 2);
+  const uint32_t plate_vertices = uint32_t(m.vertex_count());
+  for (uint32_t i = 0; i < 12; ++i) {
+    m.positions.insert(m.positions.end(), {1e30f * float(i % 3 == 0), 1e30f * float(i % 3 == 1),
+                                           -1e30f * float(i % 3 == 2)});
+    m.triangles.insert(m.triangles.end(),
+                       {7 * i % plate_vertices, (7 * i + 1) % plate_vertices, plate_vertices + i});
+  }
+  const vrs::Evaluator eval = evaluator(m);
+  vrs::InputSurface input;
+  input.keep(m.triangles);
+  input.build(eval);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> u(-2, 8);
+  for (int i = 0; i < 300; ++i) {
+    const Vec3 x{u(rng), u(rng), u(rng) * 0.3};
+    double best = std::numeric_limits<double>::infinity();
+    for (size_t f = 0; f < m.face_count(); ++f)
+      best = std::min(best, vrs::point_triangle_distance2(x, eval.position(m.triangles[3 * f]),
+                                                          eval.position(m.triangles[3 * f + 1]),
+                                                          eval.position(m.triangles[3 * f + 2])));
+    double d2;
+    Vec3 n;
+    ASSERT_TRUE(input.nearest(x, eval, d2, n));
+    EXPECT_NEAR(d2, best, 1e-9 * (1 + best)) << "point " << i;
+  }
+  // The centroids' range: the needles' (at a third of 1e30) cut down to the plate's bulk.
+  auto centroid = [&](size_t f) {
+    return (eval.position(m.triangles[3 * f]) + eval.position(m.triangles[3 * f + 1]) +
+            eval.position(m.triangles[3 * f + 2])) *
+           (1.0 / 3);
+  };
+  double lo[3] = {-1e30, -1e30, -1e30}, hi[3] = {1e30, 1e30, 1e30};
+  vrs::InputSurface::clamp_to_bulk(centroid, m.face_count(), lo, hi);
+  for (int a = 0; a < 3; ++a) {
+    EXPECT_GT(lo[a], -200.0) << "axis " << a;
+    EXPECT_LT(hi[a], 200.0) << "axis " << a;
+  }
+}
+
+// An ordinary mesh's centroids span no more than its bulk: the hierarchy resolves their whole
+// range, as it did before the bulk was asked (the same hierarchy, the same speed).
+TEST(InputSurface, AnOrdinaryMeshKeepsItsWholeRange) {
+  for (const vrs::Mesh& m :
+       {vrs_test::icosphere(3), vrs_test::plate_with_holes(40, 1, {}, 0.1f, 1)}) {
+    auto centroid = [&](size_t f) {
+      const float* p = m.positions.data();
+      Vec3 c{0, 0, 0};
+      for (int k = 0; k < 3; ++k) {
+        const uint32_t v = m.triangles[3 * f + k];
+        c = c + Vec3{p[3 * v], p[3 * v + 1], p[3 * v + 2]} * (1.0 / 3);
+      }
+      return c;
+    };
+    double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
+    for (size_t f = 0; f < m.face_count(); ++f) {
+      const Vec3 c = centroid(f);
+      const double x[3] = {c.x, c.y, c.z};
+      for (int a = 0; a < 3; ++a)
+        lo[a] = std::min(lo[a], x[a]), hi[a] = std::max(hi[a], x[a]);
+    }
+    double clo[3] = {lo[0], lo[1], lo[2]}, chi[3] = {hi[0], hi[1], hi[2]};
+    vrs::InputSurface::clamp_to_bulk(centroid, m.face_count(), clo, chi);
+    for (int a = 0; a < 3; ++a) {
+      EXPECT_EQ(clo[a], lo[a]) << "axis " << a;
+      EXPECT_EQ(chi[a], hi[a]) << "axis " << a;
     }
   }
 }
