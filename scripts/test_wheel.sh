@@ -4,8 +4,9 @@
 # the pinned versions, `import vrsimplify` and a 1 M-face run, and the package's tests
 # (python/tests) run from outside the source tree against the installed files only:
 #   - cp311 on Debian's python3 (3.11);
-#   - cp312-abi3 on the CPython 3.13 scripts/lib/cpython.sh builds, and on CPython 3.14 inside
-#     the Debian sid root (scripts/setup.sh --roots; skipped, saying so, without it);
+#   - cp312-abi3 on the CPython 3.13 scripts/lib/cpython.sh builds, and on CPython 3.14 and
+#     3.15 inside the Debian sid root (scripts/setup.sh --roots; skipped, saying so, without
+#     it; 3.15 with Debian's numpy and without pymeshlab, which PyPI has no 3.15 builds of);
 #   - the sdist, built by `pip install` (a compiler at hand) on Debian's python3: the numpy API.
 # Then the examples the README and the documentation show, in the cp311 environment. Prints
 # each wheel's size and import time.
@@ -46,11 +47,20 @@ echo "test_wheel: the examples the README and the documentation show"
 PATH="$scratch/cp311/venv/bin:$PATH" QT_QPA_PLATFORM=offscreen "$scratch/cp311/venv/bin/python" "$top/tests/docs/run_examples.py" "$top"
 suite cp313-abi3 "$("$top/scripts/lib/cpython.sh")" "$abi3"
 
-# CPython 3.14 in the sid root: Debian's python3.14 there has no ensurepip, so pip runs from
-# its wheel (the one CPython 3.13 bundles); this machine's certificates go in for pip.
+# CPython 3.14 and 3.15 in the sid root: Debian's python3.1x there has no ensurepip, so pip runs
+# from its wheel (the one CPython 3.13 bundles); this machine's certificates go in for pip.
+# PyPI has no numpy nor pymeshlab for 3.15 yet (numpy 2.4.6: cp314 at most): there the venv sees
+# Debian's numpy (built for 3.14 and 3.15), pip and the C extensions Dask's distributed needs
+# (meshlab_root.sh installs them), pip adds the pinned pure-Python rest, and pymeshlab's tests
+# are skipped, saying so.
 root=$cache/roots/sid
-if [ -x "$root/usr/bin/python3.14" ]; then
-  inside=/tmp/vrs-wheel-test
+sid_suite() { # PYTHON (python3.14 | python3.15)
+  local python=$1 inside=/tmp/vrs-wheel-test venv_opts="--without-pip" pip_pins="${pins[*]} pip"
+  local require=1 pip='venv/bin/python $pipwhl/pip'
+  if [ "$python" = python3.15 ]; then # the pip CPython 3.13 bundles fails on 3.15: Debian's
+    venv_opts="--without-pip --system-site-packages" require="" pip="venv/bin/python -m pip"
+    pip_pins="$(pin trimesh) $(pin pytest) $(pin dask) $(pin distributed) $(pin fsspec)"
+  fi
   rm -rf "$root$inside" && mkdir -p "$root$inside"
   cp "$abi3" "$root$inside/"
   mkdir -p "$root$inside/python" # the tests read ../../meshes and ../examples
@@ -58,9 +68,10 @@ if [ -x "$root/usr/bin/python3.14" ]; then
   cp -r "$top/meshes" "$root$inside/meshes"
   cp /etc/ssl/certs/ca-certificates.crt "$root$inside/ca.crt"
   cp "$(dirname "$("$top/scripts/lib/cpython.sh")")"/../lib/python3.13/ensurepip/_bundled/pip-*.whl "$root$inside/"
+  local pipwhl pip_env="" var
   pipwhl=$(basename "$(ls "$root$inside"/pip-*.whl)")
+  pip=${pip//\$pipwhl/$pipwhl}
   # pip inside uses the index this machine's pip is configured with (file and environment).
-  pip_env=""
   [ -f /etc/pip.conf ] && cp /etc/pip.conf "$root$inside/pip.conf" && pip_env="PIP_CONFIG_FILE=$inside/pip.conf"
   for var in PIP_INDEX_URL PIP_EXTRA_INDEX_URL PIP_TRUSTED_HOST; do
     [ -n "${!var:-}" ] && pip_env="$pip_env $var=${!var}"
@@ -68,19 +79,24 @@ if [ -x "$root/usr/bin/python3.14" ]; then
   cat >"$root$inside/run.sh" <<RUN
 set -e
 cd $inside
-export PIP_CERT=$inside/ca.crt PIP_DISABLE_PIP_VERSION_CHECK=1 QT_QPA_PLATFORM=offscreen VRS_REQUIRE_PYMESHLAB=1 $pip_env
-python3.14 -m venv --without-pip venv
-venv/bin/python $pipwhl/pip install -q $(basename "$abi3") ${pins[*]} pip
-venv/bin/python -c "import vrsimplify; print('cp314 import ok', vrsimplify.__version__)"
+export PIP_CERT=$inside/ca.crt PIP_DISABLE_PIP_VERSION_CHECK=1 QT_QPA_PLATFORM=offscreen VRS_REQUIRE_PYMESHLAB=$require $pip_env
+$python -m venv $venv_opts venv
+$pip install -q $(basename "$abi3") $pip_pins
+venv/bin/python -c "import sys, numpy, vrsimplify; print(sys.version.split()[0], 'import ok', vrsimplify.__version__, 'numpy', numpy.__version__)"
 venv/bin/python -c '$big_run'
-PATH=$inside/venv/bin:\$PATH venv/bin/python -m pytest -q -p no:cacheprovider --rootdir $inside python/tests
+PATH=$inside/venv/bin:\$PATH venv/bin/python -m pytest -q -p no:cacheprovider -rs --rootdir $inside python/tests
 RUN
-  echo "test_wheel [cp314-abi3, Debian sid root]: $(basename "$abi3")"
+  echo "test_wheel [${python#python}-abi3, Debian sid root]: $(basename "$abi3")"
   "$top/scripts/lib/in_root.sh" "$root" bash "$inside/run.sh"
   rm -rf "$root$inside"
-else
-  echo "test_wheel: no Debian sid root ($root; scripts/setup.sh --roots makes it): CPython 3.14 not tried"
-fi
+}
+for python in python3.14 python3.15; do
+  if [ -x "$root/usr/bin/$python" ]; then
+    sid_suite "$python"
+  else
+    echo "test_wheel: no $python in the Debian sid root ($root; scripts/setup.sh --roots makes it): not tried"
+  fi
+done
 
 echo "test_wheel [sdist]: pip install $(basename "$sdist") (built here)"
 /usr/bin/python3 -m venv "$scratch/sdist"

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Makes (once; cached under $VRS_CACHE/roots) a minimal Debian root holding the real MeshLab of a
-# newer release, to run its GUI here under Xvfb: trixie has MeshLab 2022.02, sid 2025.07. The
-# root is disposable and never touches this machine's own packages. Prints the root's path.
+# newer release, to run its GUI here under Xvfb: trixie has MeshLab 2022.02, sid 2025.07 (and
+# CPython 3.14 and 3.15 for the wheel's tests). The root is disposable and never touches this
+# machine's own packages. Prints the root's path.
 #   scripts/lib/meshlab_root.sh trixie|sid
 set -euo pipefail
 here=$(cd "$(dirname "$0")" && pwd)
@@ -36,5 +37,15 @@ if [ ! -f "$root/.ready" ]; then
   echo "$got" >"$tmp/.meshlab-version"
   touch "$tmp/.ready"
   rm -rf "$root" && mv "$tmp" "$root"
+fi
+# The sid root also runs the wheel's tests on CPython 3.15 (scripts/test_wheel.sh): PyPI has no
+# numpy for it yet, Debian's is built for 3.14 and 3.15, as are pip and the C extensions Dask's
+# distributed needs. Added to a root made before, too.
+if [ "$suite" = sid ] && [ ! -f "$root/.python3.15" ]; then
+  chroot "$root" env DEBIAN_FRONTEND=noninteractive sh -c \
+    'apt-get update -qq && apt-get install -y -qq python3.15 python3-numpy python3-pip \
+       python3-yaml python3-msgpack python3-psutil python3-tornado python3-markupsafe && apt-get clean' \
+    >>"$cache/roots/$suite.log" 2>&1 || { tail -n 20 "$cache/roots/$suite.log" >&2; exit 1; }
+  touch "$root/.python3.15"
 fi
 echo "$root"
