@@ -56,7 +56,7 @@ suite cp313-abi3 "$("$top/scripts/lib/cpython.sh")" "$abi3"
 root=$cache/roots/sid
 sid_suite() { # PYTHON (python3.14 | python3.15)
   local python=$1 inside=/tmp/vrs-wheel-test venv_opts="--without-pip" pip_pins="${pins[*]} pip"
-  local require=1 pip='venv/bin/python $pipwhl/pip'
+  local require=1 pip=""
   if [ "$python" = python3.15 ]; then # the pip CPython 3.13 bundles fails on 3.15: Debian's
     venv_opts="--without-pip --system-site-packages" require="" pip="venv/bin/python -m pip"
     pip_pins="$(pin trimesh) $(pin pytest) $(pin dask) $(pin distributed) $(pin fsspec)"
@@ -70,7 +70,7 @@ sid_suite() { # PYTHON (python3.14 | python3.15)
   cp "$(dirname "$("$top/scripts/lib/cpython.sh")")"/../lib/python3.13/ensurepip/_bundled/pip-*.whl "$root$inside/"
   local pipwhl pip_env="" var
   pipwhl=$(basename "$(ls "$root$inside"/pip-*.whl)")
-  pip=${pip//\$pipwhl/$pipwhl}
+  [ -n "$pip" ] || pip="venv/bin/python $pipwhl/pip"
   # pip inside uses the index this machine's pip is configured with (file and environment).
   [ -f /etc/pip.conf ] && cp /etc/pip.conf "$root$inside/pip.conf" && pip_env="PIP_CONFIG_FILE=$inside/pip.conf"
   for var in PIP_INDEX_URL PIP_EXTRA_INDEX_URL PIP_TRUSTED_HOST; do
