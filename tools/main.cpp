@@ -59,6 +59,9 @@ const char* kUsage =
     "                                  the kept border alone would take more than a quarter\n"
     "                                  of the faces asked for)\n"
     "  --keep-boundary                 keep every boundary vertex whatever the target\n"
+    "  --no-slide                      leave kept vertices where the run left them (default:\n"
+    "                                  after the run, a kept vertex may give its place to a\n"
+    "                                  removed input vertex nearer the input)\n"
     "  --split-vertices seam|weld|keep vertices written twice at one position along a\n"
     "                                  seam: welded for the run, each side keeping its own\n"
     "                                  copies (seam), welded freely (weld: the default when\n"
@@ -155,12 +158,12 @@ void print_json(const vrs::Report& r, double seconds_simplify, double seconds_to
       "\"constrained_edges\":%zu,\"input_issues\":{\"degenerate_faces\":%zu,"
       "\"nonfinite_vertices\":%zu,\"unreferenced_vertices\":%zu,"
       "\"reoriented_faces\":%zu,\"welded_vertices\":%zu},"
-      "\"relaxed_removals\":%zu,\"boundary_simplified\":%s,\"stop_detail\":\"%s\","
+      "\"relaxed_removals\":%zu,\"slid\":%zu,\"boundary_simplified\":%s,\"stop_detail\":\"%s\","
       "\"message\":\"%s\"",
       r.rejected_total(), vrs::stop_reason_name(r.stop), r.target_reached ? "true" : "false",
       r.max_removed_factor, r.kept_boundary, r.kept_nonmanifold, r.kept_locked, r.kept_high_valence,
       r.kept_constrained, r.constrained_edges, r.dropped_degenerate_faces, r.nonfinite_vertices,
-      r.unreferenced_vertices, r.reoriented_faces, r.welded_vertices, r.relaxed_removals,
+      r.unreferenced_vertices, r.reoriented_faces, r.welded_vertices, r.relaxed_removals, r.slid,
       r.boundary_simplified ? "true" : "false", vrs_common::json_text(r.stop_detail).c_str(),
       vrs_common::json_text(r.message).c_str());
   // A bound that was not tracked is absent, never 0 (which would read "no error at all").
@@ -201,6 +204,10 @@ void print_text(const vrs::Report& r, double seconds_simplify, double seconds_to
     std::printf("relaxed: %zu removals after the input-normal veto was eased or lifted to reach "
                 "the target\n",
                 r.relaxed_removals);
+  if (r.slid)
+    std::printf("slid:    %zu kept vertices gave their place to a removed input vertex nearer "
+                "the input (--no-slide: not)\n",
+                r.slid);
   if (!r.message.empty()) std::printf("note:    %s\n", r.message.c_str());
 }
 
@@ -252,7 +259,7 @@ int main(int argc, char** argv) {
     // Options a tiled run does not honour yet: it refuses them by name (never ignores them).
     for (const char* o : {"--ascii", "--simplify-boundary", "--keep-boundary", "--max-jump",
                           "--error-bound", "--mode", "--queue", "--fill", "--priority", "--mapping",
-                          "--feature-angle", "--reprice", "--intervals", "--threads"})
+                          "--feature-angle", "--reprice", "--intervals", "--threads", "--no-slide"})
       if (a == o && not_tiled.empty()) not_tiled = a;
     if (a == "--help" || a == "-h") {
       std::printf("%s", kUsage);
@@ -274,6 +281,8 @@ int main(int argc, char** argv) {
       opt.simplify_boundary = true;
     } else if (a == "--keep-boundary") {
       opt.simplify_boundary_when_needed = false;
+    } else if (a == "--no-slide") {
+      opt.slide = false;
     } else if (a == "--split-vertices") {
       const std::string m = (v = value()) ? v : "";
       if (m == "seam" || m == "weld" || m == "keep")

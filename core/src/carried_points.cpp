@@ -66,21 +66,27 @@ bool CarriedPoints::folds_input(uint32_t v, const Ring& ring, const Patch& patch
   return false;
 }
 
-void CarriedPoints::hand_over(uint32_t v, const Ring& ring, const Patch& patch,
-                              const Evaluator& eval) {
-  // One chain of every point the old faces carried, v first; the slots are emptied.
+uint32_t CarriedPoints::gather(uint32_t v, const Ring& ring, uint32_t skip) {
   uint32_t chain = v;
   next_[v] = kNone;
   for (int i = 0; i < ring.faces; ++i) {
     uint32_t& h = head_[ring.f[i]];
     for (uint32_t p = h; p != kNone;) {
       const uint32_t after = next_[p];
-      next_[p] = chain;
-      chain = p;
+      if (p != skip) {
+        next_[p] = chain;
+        chain = p;
+      }
       p = after;
     }
     h = kNone;
   }
+  return chain;
+}
+
+void CarriedPoints::hand_over(uint32_t v, const Ring& ring, const Patch& patch,
+                              const Evaluator& eval) {
+  const uint32_t chain = gather(v, ring, kNone);
   if (patch.count == 0) return; // nothing stands for them any more: the triangle went
   const Vec3 c = eval.position(v);
   for (uint32_t p = chain; p != kNone;) {
@@ -91,6 +97,21 @@ void CarriedPoints::hand_over(uint32_t v, const Ring& ring, const Patch& patch,
     const Vec2 s{dot(d, patch.u), dot(d, patch.w)};
     int t = triangle_under(patch, s);
     if (t < 0) nearest2(eval.position(p), patch, -1.0, &t);
+    uint32_t& h = head_[ring.f[t]];
+    next_[p] = h;
+    h = p;
+    p = after;
+  }
+}
+
+void CarriedPoints::slide(uint32_t v, uint32_t u, const Ring& ring, const Patch& fan,
+                          const Evaluator& eval) {
+  const uint32_t chain = gather(v, ring, u);
+  next_[u] = kNone;
+  for (uint32_t p = chain; p != kNone;) {
+    const uint32_t after = next_[p];
+    int t = 0;
+    nearest2(eval.position(p), fan, -1.0, &t);
     uint32_t& h = head_[ring.f[t]];
     next_[p] = h;
     h = p;

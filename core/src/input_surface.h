@@ -35,6 +35,10 @@ class InputSurface {
   // boxes of 6 bytes a face, 10 more while it is set up).
   void build(const Evaluator& eval) const;
   bool kept() const { return !tris_.empty(); }
+  // Whether the hierarchy was built (not to be asked while another thread may build it).
+  bool built() const { return !levels_.empty(); }
+  // The faces kept (3 indices a face; after build(), in the hierarchy's order).
+  const UninitVector<uint32_t>& faces() const { return tris_; }
 
   // The input face nearest x: its unit normal in `normal` and the squared distance in `d2`.
   // False when there is none (no face with area).

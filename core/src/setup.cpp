@@ -162,6 +162,7 @@ void Simplifier::first_prices(UninitVector<uint8_t>& kinds, UninitVector<FirstPr
   // slots); the caller counts them in vertex order.
   kinds.resize(n);
   first.resize(n);
+  slide_corner_.assign(n, kNone);
   workers_.for_each(
       n,
       [&](size_t i) {
@@ -171,7 +172,11 @@ void Simplifier::first_prices(UninitVector<uint8_t>& kinds, UninitVector<FirstPr
         kinds[v] = static_cast<uint8_t>(kind);
         if (kind == VertexKind::Isolated || flags_[v] & kFlagLocked || !removable(kind)) return;
         std::array<int, 2> seam;
-        if (along(v, ring, seam) == Along::Kept)
+        const Along where = along(v, ring, seam);
+        // A place a kept vertex may slide onto after the run (slide.cpp): an interior vertex
+        // on no constrained edge (no seam, crease or orientation border through it).
+        slide_corner_[v] = kind == VertexKind::Interior && where == Along::Free ? 0 : kNone;
+        if (where == Along::Kept)
           kinds[v] |= kKeptOnConstraints;
         else {
           const Priced p = evaluate(v, ring);
@@ -302,6 +307,17 @@ void Simplifier::prepare() {
   // Several fans at one vertex (fan_split.h): a copy a fan, and the set-up made again in the
   // new numbering (on such meshes only).
   if (split_fans_apart(kinds)) first_prices(kinds, first);
+  // Its corner in the input (the first), for the per-corner data of the faces it then joins.
+  if (!corner_source_.empty()) {
+    std::vector<uint8_t> found(slide_corner_.size(), 0);
+    for (size_t i = 0; i < t.size(); ++i) {
+      const uint32_t v = t[i];
+      if (slide_corner_[v] != kNone && !found[v]) {
+        slide_corner_[v] = corner_source_[i];
+        found[v] = 1;
+      }
+    }
+  }
   // Counted in blocks on the workers (each vertex writes only its own flags and price), the
   // blocks' counts added in order.
   struct Counts {

@@ -206,6 +206,7 @@ Report simplify(Mesh& mesh, const Options& options) {
   }
   if (rep.stop == StopReason::NoCandidates || rep.stop == StopReason::ErrorBound)
     rep.stop_detail = s.explain_stop();
+  if (rep.stop != StopReason::Cancelled) s.slide();
   s.compact();
   rep.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   rep.parallel_seconds = s.parallel_seconds();

@@ -26,6 +26,8 @@
 
 namespace vrs {
 
+struct LocalInput; // slide.cpp
+
 class Simplifier {
  public:
   Simplifier(Mesh& mesh, const Options& opt, Report& rep)
@@ -58,6 +60,32 @@ class Simplifier {
   bool run_parts();                              // parts.cpp
   template <class Queue> void run(Queue& queue); // simplifier.cpp
   void compact();                                // output.cpp
+  void slide();                                  // slide.cpp
+  // Its steps: the fans to try; the vertices they may ask about, each a slot with its input
+  // faces' corners (slide_first_, slide_faces_) and a third of their area; a fan's choice, and
+  // writing it.
+  std::vector<uint32_t> slide_gate();
+  void slide_index(const std::vector<uint32_t>& fans);
+  uint32_t slide_choice(uint32_t v, const Ring& ring) const;
+  void slide_commit(uint32_t v, uint32_t u, const Ring& ring);
+  double slide_in(uint32_t v, uint32_t u, const Ring& ring, const Patch& patch,
+                  double* farthest = nullptr) const;
+  bool slide_local(uint32_t v, const Ring& ring, LocalInput& in) const;
+  int slide_slot(uint32_t v) const; // -1: none
+  double slide_area(uint32_t v) const {
+    const int k = slide_slot(v);
+    return k >= 0 ? slide_area_[size_t(k)] : 0.0;
+  }
+  std::vector<uint32_t> slide_ids_; // sorted
+  bool slide_whole_input_ = false;  // the input's hierarchy built by the run
+  std::vector<float> slide_area_;
+  // Per slot, its input faces' corners: not indices into InputSurface's faces, which its
+  // hierarchy reorders when a slid fan's fold check first builds it.
+  std::vector<uint32_t> slide_first_;
+  std::vector<std::array<uint32_t, 3>> slide_faces_;
+  // Per vertex: one of its input corners (0 without per-corner data), or kNone where no kept
+  // vertex may slide onto it (setup.cpp, slide.cpp).
+  std::vector<uint32_t> slide_corner_;
   double parallel_seconds() const { return workers_.parallel_seconds(); }
   // Why the remaining vertices stay, when the target was not met (Report::stop_detail).
   std::string explain_stop() const; // stop_explanation.cpp

@@ -57,7 +57,7 @@ QString lod_label(const QString& base, int level) {
 struct Totals {
   size_t removed = 0, rejected[vrs::RejectCount] = {};
   size_t kept_boundary = 0, kept_nonmanifold = 0, kept_locked = 0, kept_high_valence = 0;
-  size_t kept_constrained = 0, constrained_edges = 0, relaxed_removals = 0;
+  size_t kept_constrained = 0, constrained_edges = 0, relaxed_removals = 0, slid = 0;
   double max_priority = 0, seconds = 0;
   double error_bound = 0, diagonal = 0; // summed over the levels: each is bounded from the last
   bool target_reached = true, boundary_simplified = false;
@@ -159,6 +159,7 @@ Outcome Application::run(const RichParameterList& par) {
   r["constrained_edges"] = count(totals_.constrained_edges);
   r["max_removed_factor"] = totals_.max_priority;
   r["relaxed_removals"] = count(totals_.relaxed_removals);
+  r["slid"] = count(totals_.slid);
   // With MaxError: the certified bound of the last level against the input (mesh units, and
   // in % of the input's diagonal). Without, no key: a bound not tracked is never "0".
   if (s.max_error > 0) {
@@ -220,6 +221,7 @@ QString Application::simplify_layer(MeshModel& m, const FilterSettings& s, int l
   totals_.kept_high_valence += r.kept_high_valence;
   totals_.kept_constrained += r.kept_constrained;
   totals_.relaxed_removals += r.relaxed_removals;
+  totals_.slid += r.slid;
   totals_.constrained_edges = std::max(totals_.constrained_edges, r.constrained_edges);
   totals_.max_priority = std::max(totals_.max_priority, r.max_removed_factor);
   totals_.error_bound += r.error_bound;
@@ -273,6 +275,9 @@ QString Application::simplify_layer(MeshModel& m, const FilterSettings& s, int l
   if (r.relaxed_removals)
     log(QString("%1 removals needed the input-normal veto lifted to reach the target")
             .arg(r.relaxed_removals));
+  if (r.slid)
+    log(QString("%1 kept vertices gave their place to a removed input vertex nearer the input")
+            .arg(r.slid));
   if (!r.message.empty()) warn(QString("Input: %1").arg(QString::fromStdString(r.message)));
   return {};
 }

@@ -104,6 +104,7 @@ nb::dict report_dict(const vrs::Report& r, bool bounded, double seconds, double 
   input["welded_vertices"] = r.welded_vertices;
   d["input_issues"] = input;
   d["relaxed_removals"] = r.relaxed_removals;
+  d["slid"] = r.slid;
   d["boundary_simplified"] = r.boundary_simplified;
   d["max_removed_factor"] = r.max_removed_factor;
   // Not tracked: None, never 0.0 (which would read "no error at all").

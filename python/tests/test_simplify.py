@@ -73,6 +73,8 @@ def test_any_thread_count_gives_the_same_mesh(fandisk):
     one = vrsimplify.simplify(v, f, ratio=0.1, threads=1)
     two = vrsimplify.simplify(v, f, ratio=0.1, threads=2)
     assert np.array_equal(one.faces, two.faces) and np.array_equal(one.vertex_map, two.vertex_map)
+    # Slid vertices included: chosen together on the workers, written in order.
+    assert one.report["slid"] > 0 and one.report["slid"] == two.report["slid"]
 
 
 def test_two_python_threads_at_once(sphere, fandisk):
@@ -99,6 +101,7 @@ def test_max_error_is_a_guarantee(sphere):
     r = vrsimplify.simplify(v, f, max_error=bound)
     assert 0 < r.report["error_bound"] <= bound * (1 + 1e-6)
     assert len(r.faces) < len(f) / 2
+    assert r.report["slid"] == 0  # the bound is certified for the run's own faces
     # Every input vertex lies within the certified bound of the output surface.
     d = point_triangle_distances(v, r.vertices[r.faces])
     assert d.max() <= r.report["error_bound"] * (1 + 1e-4) + 1e-7

@@ -50,6 +50,9 @@ class Report(TypedDict):
     """degenerate_faces (dropped), nonfinite_vertices, unreferenced_vertices (kept),
     reoriented_faces, welded_vertices (split copies welded for the run, see split_vertices)."""
     relaxed_removals: int
+    slid: int
+    """Kept vertices that gave their place, after the run, to a removed input vertex nearer the
+    input (their faces kept; every vertex still an input vertex, untouched)."""
     boundary_simplified: bool
     max_removed_factor: float
     error_bound: Optional[float]
@@ -76,7 +79,7 @@ class Result:
     per-corner data (UVs, normals) it takes: the same vertex, on the same side of every seam."""
     report: Report
     """What the run did: counts, `stop_reason` as text, `target_reached`, `error_bound` (mesh
-    units; None unless a bound was tracked), `boundary_simplified`, `relaxed_removals`,
+    units; None unless a bound was tracked), `boundary_simplified`, `relaxed_removals`, `slid`,
     `stop_detail`, warnings in `message` (see the report table in the documentation)."""
 
 

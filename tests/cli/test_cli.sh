@@ -64,7 +64,7 @@ n_out=$(wc -l <"$out/out.vtx")
 # 5. The JSON report has every field the benchmark and the README read.
 for field in input_vertices input_faces output_vertices output_faces seconds_simplify seconds_total \
   rejected_total stop_reason target_reached fold edge_exists flip degenerate triangle_exists \
-  fold_over relaxed_removals stop_detail; do
+  fold_over relaxed_removals slid stop_detail; do
   grep -q "\"$field\"" "$out/f10.ply.json" && ok || fail "json lacks $field"
 done
 
@@ -75,7 +75,7 @@ for args in "--faces 3000" "--vertices 2000" "--max-factor 0.0001" "--auto" "--a
   "--ratio 0.2 --priority local-error" "--max-factor 0.0001 --priority factor" \
   "--ratio 0.2 --fill projection" "--ratio 0.2 --fill best" "--ratio 0.2 --progress" \
   "--ratio 0.2 --quiet" "--ratio 0.2 --reprice eager" "--ratio 0.2 --reprice lazy" \
-  "--ratio 0.2 --reprice auto" "--ratio 0.2 --threads 1"; do
+  "--ratio 0.2 --reprice auto" "--ratio 0.2 --threads 1" "--ratio 0.2 --no-slide"; do
   # shellcheck disable=SC2086
   if "$bin" "$in" "$out/t.ply" $args --json >"$out/t.json" 2>"$out/err"; then
     f=$(json_num "$out/t.json" output_faces)
@@ -247,8 +247,13 @@ expect_exit 2 "must end in .ply, .off, .obj, .stl or .glb" "$bin" "$out/missing.
   grep -q '"boundary_simplified":false' "$out/nb.json" && ok ||
   fail "a run without a bound reports one: $(cat "$out/nb.json")"
 "$bin" "$in" "$out/bo.ply" --max-error 0.5% >"$out/bo.txt" &&
-  grep -q '^bound:' "$out/bo.txt" && ! grep -q '^relaxed:' "$out/bo.txt" && ok ||
+  grep -q '^bound:' "$out/bo.txt" && ! grep -q '^relaxed:' "$out/bo.txt" && ! grep -q '^slid:' "$out/bo.txt" && ok ||
   fail "--max-error alone: $(cat "$out/bo.txt")"
+# The slide: on by default (the same faces as without it), off with --no-slide.
+"$bin" "$in" "$out/ns.ply" --ratio 0.1 --no-slide --json >"$out/ns.json" &&
+  grep -q '"slid":0,' "$out/ns.json" && grep -q '"slid":[1-9]' "$out/nb.json" &&
+  [ "$(grep -o '"output_faces":[0-9]*' "$out/ns.json")" = "$(grep -o '"output_faces":[0-9]*' "$out/nb.json")" ] && ok ||
+  fail "--no-slide: $(cat "$out/ns.json")"
 # mushroom (CGAL) has a long border: at 1 % it alone would take more than a quarter of the target.
 mush=$3/mushroom.off
 if [ -f "$mush" ]; then

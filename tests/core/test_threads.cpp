@@ -46,6 +46,7 @@ void expect_same(const Outcome& a, const Outcome& b, const std::string& what) {
   EXPECT_EQ(a.report.stop, b.report.stop) << what;
   EXPECT_EQ(a.report.stop_detail, b.report.stop_detail) << what;
   EXPECT_EQ(a.report.relaxed_removals, b.report.relaxed_removals) << what;
+  EXPECT_EQ(a.report.slid, b.report.slid) << what;
   for (int r = 0; r < RejectCount; ++r)
     EXPECT_EQ(a.report.rejected[r], b.report.rejected[r]) << what << ", " << reject_name(Reject(r));
   EXPECT_EQ(a.report.face_source, b.report.face_source) << what;

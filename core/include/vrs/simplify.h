@@ -163,6 +163,11 @@ struct Options {
   // any cost (the eased passes may then fold over the input where nothing else reaches it).
   // Not with a finite max_error: the bound says how far a removal may go.
   double max_price_jump = 10.0;
+  // After the run, in 3D mode: a kept interior vertex may give its place to a removed input
+  // vertex its faces carried, where its faces then stand nearer the input and none folds (the
+  // output's vertices stay input vertices, their attributes untouched; Report::slid), on the
+  // 1 000 fans farthest from the input (every one of a small output). False: the run's faces.
+  bool slide = true;
   // Threads to plan removals on (0: the machine's hardware threads). The output is the same
   // whatever the number: independent removals are planned together, committed in queue order.
   int threads = 0;
@@ -226,6 +231,7 @@ struct Report {
   size_t input_vertices = 0, input_faces = 0;
   size_t vertices = 0, faces = 0; // output (vertices: referenced ones, plus unreferenced inputs)
   size_t removed = 0;             // vertices removed
+  size_t slid = 0;                // kept vertices that gave their place to a removed one
   // Wall time of the run, and the part of it spent in loops spread over the threads (the
   // rest ran on one thread whatever Options::threads: Amdahl's serial part).
   double seconds = 0, parallel_seconds = 0;
