@@ -18,7 +18,7 @@ fail() { failed=$((failed + 1)); echo "FAIL: $1"; }
 declare -A args=(
   [--ascii]="--ascii" [--auto]="--auto" [--error-bound]="--error-bound" [--faces]="--faces 5000"
   [--feature-angle]="--feature-angle 30" [--fill]="--fill projection" [--intervals]="--intervals 50"
-  [--json]="--json" [--keep-boundary]="--keep-boundary" [--mapping]="--mapping linear"
+  [--json]="--json" [--keep-boundary]="--keep-boundary" [--mapping]="--mapping linear" [--no-slide]="--no-slide"
   [--max-error]="--max-error 0.5%" [--max-factor]="--max-factor 0.001" [--max-jump]="--max-jump 2"
   [--mode]="--mode planar" [--priority]="--priority factor" [--progress]="--progress"
   [--queue]="--queue heap" [--ratio]="--ratio 0.2" [--reprice]="--reprice eager"
