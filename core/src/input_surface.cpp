@@ -278,7 +278,7 @@ bool InputSurface::folds(const Patch& patch, const Evaluator& eval, double min_c
     if (!nearest(x, eval, d2, nearest_normal, &hint) || dot(nearest_normal, n) > 0) return false;
     // Ties (an input edge or crease nearest): measured again with a hair of slack, relative
     // to the point's magnitude (an absolute one took in the whole of a cube 2e-41 wide).
-    const double r2 = d2 * (1 + 1e-6) + 1e-24 * dot(x, x);
+    const double r2 = tie_reach2(d2, x);
     return !any_agrees(x, r2, n, eval);
   };
   for (int t = 0; t < patch.count; ++t) {

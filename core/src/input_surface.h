@@ -46,6 +46,10 @@ class InputSurface {
   // its distance bounds the search at once; the slow case 5.9 -> 5.3 s), then the face found;
   // kNoFace for none. Ties may then answer another face as near: folds() asks ties again.
   static constexpr size_t kNoFace = ~size_t(0);
+  // The squared distance within which another face counts as as near as one at d2 from x: a
+  // slack relative to the distance and to x's magnitude (a denormal-scale cube's ties, the
+  // fuzzer's), for every fold question that asks ties again.
+  static double tie_reach2(double d2, Vec3 x) { return d2 * (1 + 1e-6) + 1e-24 * dot(x, x); }
   bool nearest(Vec3 x, const Evaluator& eval, double& d2, Vec3& normal,
                size_t* hint = nullptr) const;
 

@@ -114,7 +114,7 @@ double out_measure(const Patch& patch, LocalInput& in, bool& folds,
           }
           out += w / (L * L) * s;
           if (farthest) *farthest = std::max(*farthest, best);
-          const double tie = best * (1 + 1e-6) + 1e-24 * dot(x, x);
+          const double tie = InputSurface::tie_reach2(best, x);
           const double tie_s = std::sqrt(tie);
           bool agrees = false;
           for (int f = 0; f < in.count && !agrees; ++f) {
