@@ -118,6 +118,8 @@ bool run_method(const std::string& method, const vrs::Mesh& in, size_t target,
         o.against_input = false;
       else if (p == "heap")
         o.queue = vrs::QueueKind::Heap;
+      else if (p == "noslide") // the run's faces, no slide after it
+        o.slide = false;
       else if (p == "seam")
         o.split_vertices = vrs::SplitVertices::Seam;
       else if (p == "keep")

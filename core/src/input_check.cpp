@@ -8,7 +8,7 @@
 
 namespace vrs {
 
-std::string check_options(const Options& o, size_t vertex_count) {
+std::string check_options(const Options& o, size_t vertex_count, size_t face_count) {
   const Target& t = o.target;
   if (static_cast<unsigned>(t.kind) > static_cast<unsigned>(TargetKind::Auto))
     return "unknown target kind";
@@ -37,6 +37,9 @@ std::string check_options(const Options& o, size_t vertex_count) {
   if (o.locked && o.locked->size() != vertex_count)
     return "lock array has " + std::to_string(o.locked->size()) + " entries for " +
            std::to_string(vertex_count) + " vertices";
+  if (o.polygon_faces && o.polygon_faces->size() != face_count)
+    return "polygon face array has " + std::to_string(o.polygon_faces->size()) + " entries for " +
+           std::to_string(face_count) + " faces";
   if (!(o.feature_angle_deg >= 0.0 && o.feature_angle_deg <= 180.0))
     return "feature angle must be in [0, 180] degrees, got " + std::to_string(o.feature_angle_deg);
   if (!(o.max_error >= 0.0)) return "max error must be >= 0, got " + std::to_string(o.max_error);

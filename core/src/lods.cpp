@@ -116,6 +116,13 @@ LodChain simplify_lods(const Mesh& input, std::vector<double> ratios, const Opti
         locked[v] = (*options.locked)[ids[v]];
       o.locked = &locked;
     }
+    std::vector<uint8_t> polygon;
+    if (options.polygon_faces) { // a level's face the chain left untouched is an input face
+      polygon.assign(faces.size(), 0);
+      for (size_t f = 0; f < faces.size(); ++f)
+        polygon[f] = faces[f] != kRemoved && (*options.polygon_faces)[faces[f]];
+      o.polygon_faces = &polygon;
+    }
     LodLevel out;
     out.ratio = ratio;
     out.report = simplify(level, o);

@@ -162,7 +162,7 @@ void Simplifier::first_prices(UninitVector<uint8_t>& kinds, UninitVector<FirstPr
   // slots); the caller counts them in vertex order.
   kinds.resize(n);
   first.resize(n);
-  slide_corner_.assign(n, kNone);
+  slide_target_.assign(n, 0);
   workers_.for_each(
       n,
       [&](size_t i) {
@@ -175,7 +175,7 @@ void Simplifier::first_prices(UninitVector<uint8_t>& kinds, UninitVector<FirstPr
         const Along where = along(v, ring, seam);
         // A place a kept vertex may slide onto after the run (slide.cpp): an interior vertex
         // on no constrained edge (no seam, crease or orientation border through it).
-        slide_corner_[v] = kind == VertexKind::Interior && where == Along::Free ? 0 : kNone;
+        slide_target_[v] = kind == VertexKind::Interior && where == Along::Free;
         if (where == Along::Kept)
           kinds[v] |= kKeptOnConstraints;
         else {
@@ -309,14 +309,10 @@ void Simplifier::prepare() {
   if (split_fans_apart(kinds)) first_prices(kinds, first);
   // Its corner in the input (the first), for the per-corner data of the faces it then joins.
   if (!corner_source_.empty()) {
-    std::vector<uint8_t> found(slide_corner_.size(), 0);
-    for (size_t i = 0; i < t.size(); ++i) {
-      const uint32_t v = t[i];
-      if (slide_corner_[v] != kNone && !found[v]) {
-        slide_corner_[v] = corner_source_[i];
-        found[v] = 1;
-      }
-    }
+    slide_corner_.assign(n, kNone);
+    for (size_t i = 0; i < t.size(); ++i)
+      if (slide_target_[t[i]] && slide_corner_[t[i]] == kNone)
+        slide_corner_[t[i]] = corner_source_[i];
   }
   // Counted in blocks on the workers (each vertex writes only its own flags and price), the
   // blocks' counts added in order.

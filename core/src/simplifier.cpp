@@ -186,7 +186,7 @@ Report simplify(Mesh& mesh, const Options& options) {
   rep.vertices = rep.input_vertices;
   rep.faces = rep.input_faces;
   std::string error = check_mesh(mesh);
-  if (error.empty()) error = check_options(options, mesh.vertex_count());
+  if (error.empty()) error = check_options(options, mesh.vertex_count(), mesh.face_count());
   if (!error.empty()) {
     rep.message = error;
     return rep;

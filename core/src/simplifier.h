@@ -71,20 +71,27 @@ class Simplifier {
   double slide_in(uint32_t v, uint32_t u, const Ring& ring, const Patch& patch,
                   double* farthest = nullptr) const;
   bool slide_local(uint32_t v, const Ring& ring, LocalInput& in) const;
-  int slide_slot(uint32_t v) const; // -1: none
+  int slide_slot(uint32_t v) const { // -1: none
+    const uint64_t word = slide_bits_[v >> 6], bit = uint64_t(1) << (v & 63);
+    return word & bit ? int(slide_rank_[v >> 6] + uint32_t(__builtin_popcountll(word & (bit - 1))))
+                      : -1;
+  }
+  // Face slot f is, untouched, half of a polygon the caller keeps (Options::polygon_faces).
+  bool polygon_face(uint32_t f) const;
   double slide_area(uint32_t v) const {
     const int k = slide_slot(v);
     return k >= 0 ? slide_area_[size_t(k)] : 0.0;
   }
-  std::vector<uint32_t> slide_ids_; // sorted
-  bool slide_whole_input_ = false;  // the input's hierarchy built by the run
+  std::vector<uint64_t> slide_bits_; // a bit a vertex: it has a slot
+  std::vector<uint32_t> slide_rank_; // per 64 vertices: the slots before them
+  bool slide_whole_input_ = false;   // the input's hierarchy built by the run
   std::vector<float> slide_area_;
-  // Per slot, its input faces' corners: not indices into InputSurface's faces, which its
-  // hierarchy reorders when a slid fan's fold check first builds it.
-  std::vector<uint32_t> slide_first_;
-  std::vector<std::array<uint32_t, 3>> slide_faces_;
-  // Per vertex: one of its input corners (0 without per-corner data), or kNone where no kept
-  // vertex may slide onto it (setup.cpp, slide.cpp).
+  // Per slot, its input faces: numbers into InputSurface's faces, which stay in place since
+  // no slide builds the hierarchy that reorders them (slide_whole_input_).
+  std::vector<uint32_t> slide_first_, slide_faces_;
+  // Per vertex: whether a kept vertex may slide onto it (setup.cpp, slide.cpp); with
+  // per-corner data, one of its input corners (else empty: 4 bytes a vertex at the peak).
+  std::vector<uint8_t> slide_target_;
   std::vector<uint32_t> slide_corner_;
   double parallel_seconds() const { return workers_.parallel_seconds(); }
   // Why the remaining vertices stay, when the target was not met (Report::stop_detail).

@@ -19,7 +19,7 @@ namespace vrs {
 // (its build alone was 0.48 s at 1.2 M faces, the questions 4x the run).
 struct LocalInput {
   int count = 0;
-  std::vector<std::array<uint32_t, 3>> face;
+  std::vector<uint32_t> face; // numbers into InputSurface's faces
   std::vector<Vec3> a, b, c, n;
   std::vector<double> cx, cy, cz, radius; // each face's bounding sphere
   std::vector<double> d2, dc2;            // out_measure's, per point: to each face, its centre
@@ -134,7 +134,7 @@ double out_measure(const Patch& patch, LocalInput& in, bool& folds,
 } // namespace
 
 bool Simplifier::slide_local(uint32_t v, const Ring& ring, LocalInput& in) const {
-  std::vector<std::array<uint32_t, 3>>& faces = in.face;
+  std::vector<uint32_t>& faces = in.face;
   faces.clear();
   auto add = [&](uint32_t p) {
     const int k = slide_slot(p);
@@ -154,8 +154,10 @@ bool Simplifier::slide_local(uint32_t v, const Ring& ring, LocalInput& in) const
     x->resize(faces.size());
   in.count = 0;
   in.mean_area = 0;
-  for (const auto& t : faces) {
-    const Vec3 a = eval_.position(t[0]), b = eval_.position(t[1]), c = eval_.position(t[2]);
+  const uint32_t* t = input_.faces().data();
+  for (uint32_t face : faces) {
+    const uint32_t* q = t + 3 * size_t(face);
+    const Vec3 a = eval_.position(q[0]), b = eval_.position(q[1]), c = eval_.position(q[2]);
     const Vec3 n = cross(b - a, c - a);
     if (!(length(n) > 0)) continue; // no side
     const int k = in.count++;
@@ -216,7 +218,7 @@ uint32_t Simplifier::slide_choice(uint32_t v, const Ring& ring) const {
   std::array<std::pair<double, uint32_t>, kSlideTries> tries;
   int tried = 0;
   carried_.for_each(ring, [&](uint32_t u) {
-    if ((flags_[u] & kFlagLocked) || slide_corner_[u] == kNone) return;
+    if ((flags_[u] & kFlagLocked) || !slide_target_[u]) return;
     // Its per-corner data must come from a face wound as the fan's (an orientation border is
     // a constrained edge, but a point can be handed across one by a removal along it).
     if (!turned_.empty() && !corner_source_.empty() &&
@@ -305,7 +307,7 @@ uint32_t Simplifier::slide_choice(uint32_t v, const Ring& ring) const {
 
 void Simplifier::slide() {
   if (!opt_.slide || opt_.mode != Mode::Surface3D || !carried_.active() || !input_.kept() ||
-      !face_bound_.empty() || !fans_.empty() || slide_corner_.size() != flags_.size())
+      !face_bound_.empty() || !fans_.empty() || slide_target_.size() != flags_.size())
     return;
   // The run's own per-vertex prices are done with: their memory goes to the slide's.
   UninitVector<float>().swap(factor_);
@@ -402,10 +404,10 @@ std::vector<uint32_t> Simplifier::slide_gate() {
         if (topo_.ring(v, tris, opt_.max_valence, ring) != VertexKind::Interior ||
             along(v, ring, seam) != Along::Free)
           return;
-        // A fan holding an input face as it was stays: that face is the input exactly, and
-        // untouched faces stay the user's (a quad's two halves are written as one again).
+        // A fan holding an untouched half of a polygon the caller writes back whole stays:
+        // the polygon stays the user's (a quad's two triangles are written as one again).
         for (int f = 0; f < ring.faces; ++f)
-          if (!(order_.face_old[ring.f[f]] & kRewrittenSlot)) return;
+          if (polygon_face(ring.f[f])) return;
         const Vec3 x = eval_.position(v);
         carried_.for_each_by_face(ring, [&](int f, uint32_t p) {
           const Vec3 a = eval_.position(ring.v[f]),
@@ -432,47 +434,69 @@ std::vector<uint32_t> Simplifier::slide_gate() {
 void Simplifier::slide_index(const std::vector<uint32_t>& fans) {
   // The vertices the tried fans may ask about (their apexes, rings and carried points): a slid
   // fan hands its points to its own faces, so these are all the later fans meet. Each gets a
-  // slot (slide_ids_, sorted): its input faces' corners (slide_local) and a third of their
-  // area (slide_in: the input side of the error is an area integral, as the benchmark samples
-  // it). Slots, not arrays over every vertex: 1.2 MB instead of 4.4 at 300 k faces.
+  // slot, numbered in vertex order: its input faces (slide_local) and a third of their area
+  // (slide_in: the input side of the error is an area integral, as the benchmark samples
+  // it). Slots, not arrays over every vertex (those took 4.4 MB at 300 k faces).
   const uint32_t* tris = mesh_.triangles.data();
-  slide_ids_.clear();
+  std::vector<uint32_t> ids;
   for (uint32_t v : fans) {
     Ring ring;
     topo_.ring(v, tris, opt_.max_valence, ring);
-    slide_ids_.push_back(v);
-    slide_ids_.insert(slide_ids_.end(), ring.v.begin(), ring.v.begin() + ring.verts);
-    carried_.for_each(ring, [&](uint32_t p) { slide_ids_.push_back(p); });
+    ids.push_back(v);
+    ids.insert(ids.end(), ring.v.begin(), ring.v.begin() + ring.verts);
+    carried_.for_each(ring, [&](uint32_t p) { ids.push_back(p); });
   }
-  std::sort(slide_ids_.begin(), slide_ids_.end());
-  slide_ids_.erase(std::unique(slide_ids_.begin(), slide_ids_.end()), slide_ids_.end());
-  const auto& f = input_.faces();
-  const size_t slots = slide_ids_.size();
+  // The slots: a bit a vertex, numbered by rank (the bits set before it, counted a word at a
+  // time): a slot found in two reads, not a search of a sorted list (that search was most of
+  // the index's time at 1.2 M faces, all of it on one thread).
+  const size_t words = (flags_.size() + 63) / 64;
+  slide_bits_.assign(words, 0);
+  for (uint32_t v : ids)
+    slide_bits_[v >> 6] |= uint64_t(1) << (v & 63);
+  std::vector<uint32_t>().swap(ids);
+  slide_rank_.assign(words + 1, 0);
+  for (size_t w = 0; w < words; ++w)
+    slide_rank_[w + 1] = slide_rank_[w] + uint32_t(__builtin_popcountll(slide_bits_[w]));
+  const size_t slots = slide_rank_.back();
+  const uint32_t* f = input_.faces().data();
+  const size_t faces = input_.faces().size() / 3;
+  auto asked = [&](uint32_t v) { return (slide_bits_[v >> 6] >> (v & 63)) & 1; };
+  // The faces with an asked corner, found on the workers block by block (a pass over every
+  // input face), then taken in order: each slot's faces and area as one thread would.
+  constexpr size_t kBlock = 65536;
+  std::vector<std::vector<uint32_t>> hits((faces + kBlock - 1) / kBlock);
+  for_each_block(&workers_, faces, kBlock, [&](size_t begin, size_t end) {
+    std::vector<uint32_t>& h = hits[begin / kBlock];
+    for (size_t i = begin; i < end; ++i)
+      if (asked(f[3 * i]) | asked(f[3 * i + 1]) | asked(f[3 * i + 2])) h.push_back(uint32_t(i));
+  });
+  auto each_corner = [&](auto&& fn) {
+    for (const auto& h : hits)
+      for (uint32_t face : h)
+        for (int c = 0; c < 3; ++c) {
+          const int k = slide_slot(f[3 * size_t(face) + c]);
+          if (k >= 0) fn(face, size_t(k));
+        }
+  };
   slide_first_.assign(slots + 1, 0);
   slide_area_.assign(slots, 0.0f);
-  std::vector<bool> asked(flags_.size(), false); // a bit a vertex: most corners are not
-  for (uint32_t v : slide_ids_)
-    asked[v] = true;
-  auto each_corner = [&](auto&& fn) {
-    for (size_t i = 0; i < f.size(); ++i)
-      if (asked[f[i]]) fn(i, size_t(slide_slot(f[i])));
-  };
-  each_corner([&](size_t, size_t k) { ++slide_first_[k + 1]; });
+  each_corner([&](uint32_t, size_t k) { ++slide_first_[k + 1]; });
   for (size_t k = 0; k < slots; ++k)
     slide_first_[k + 1] += slide_first_[k];
   slide_faces_.resize(slide_first_.back());
   std::vector<uint32_t> at(slide_first_.begin(), slide_first_.end() - 1);
-  each_corner([&](size_t i, size_t k) {
-    const size_t c = i - i % 3;
-    const Vec3 a = eval_.position(f[c]), b = eval_.position(f[c + 1]), d = eval_.position(f[c + 2]);
+  each_corner([&](uint32_t face, size_t k) {
+    const uint32_t* q = f + 3 * size_t(face);
+    const Vec3 a = eval_.position(q[0]), b = eval_.position(q[1]), d = eval_.position(q[2]);
     slide_area_[k] += float(length(cross(b - a, d - a)) / 6);
-    slide_faces_[at[k]++] = {f[c], f[c + 1], f[c + 2]};
+    slide_faces_[at[k]++] = face;
   });
 }
 
-int Simplifier::slide_slot(uint32_t v) const {
-  const auto it = std::lower_bound(slide_ids_.begin(), slide_ids_.end(), v);
-  return it != slide_ids_.end() && *it == v ? int(it - slide_ids_.begin()) : -1;
+bool Simplifier::polygon_face(uint32_t f) const {
+  const uint32_t old = order_.face_old[f];
+  if (!opt_.polygon_faces || (old & kRewrittenSlot)) return false;
+  return (*opt_.polygon_faces)[kept_faces_.empty() ? old : kept_faces_[old]] != 0;
 }
 
 } // namespace vrs

@@ -100,6 +100,18 @@ CoreCopy to_core(CMeshO& m) {
   return c;
 }
 
+std::vector<uint8_t> polygon_faces(const CMeshO& m, const CoreCopy& c) {
+  std::vector<uint8_t> polygon(c.face.size(), 0);
+  bool any = false;
+  for (size_t f = 0; f < c.face.size(); ++f) {
+    const CFaceO& face = m.face[c.face[f]];
+    polygon[f] = face.IsF(0) || face.IsF(1) || face.IsF(2);
+    any = any || polygon[f];
+  }
+  if (!any) polygon.clear();
+  return polygon;
+}
+
 vrs_vcg::CornerData corner_data(const MeshModel& m, double feature_angle) {
   vrs_vcg::CornerData d;
   d.texcoord = m.hasDataMask(MeshModel::MM_WEDGTEXCOORD);

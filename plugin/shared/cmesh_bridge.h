@@ -27,6 +27,11 @@ CoreCopy to_core(CMeshO& m);
 // Quadric Edge Collapse Decimation does).
 std::vector<uint8_t> vertex_locks(const CMeshO& m, const CoreCopy& copy, bool selected_only);
 
+// Per core face, whether it is part of a polygon (a faux edge joins it to another triangle):
+// polygons are written back whole, so the core's slide leaves them as they are. Empty when
+// the layer has none.
+std::vector<uint8_t> polygon_faces(const CMeshO& m, const CoreCopy& copy);
+
 // The per-corner and per-face data the layer holds (texture coordinates, normals, colors).
 // `feature_angle` (degrees, 0: off) is also the crease angle of per-corner normals.
 vrs_vcg::CornerData corner_data(const MeshModel& m, double feature_angle);

@@ -185,6 +185,8 @@ QString Application::simplify_layer(MeshModel& m, const FilterSettings& s, int l
   o.corner_sources = data.any();
   const std::vector<uint8_t> lock = vertex_locks(m.cm, copy, s.selected);
   if (!lock.empty()) o.locked = &lock;
+  const std::vector<uint8_t> polygons = polygon_faces(m.cm, copy);
+  if (!polygons.empty()) o.polygon_faces = &polygons;
   o.progress = progress;
   vcg::tri::UpdateBounding<CMeshO>::Box(m.cm);
   if (level == 1) totals_.diagonal = m.cm.bbox.Diag();

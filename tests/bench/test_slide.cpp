@@ -3,7 +3,9 @@
 // stands nearer the input, and the run's every invariant holds.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <string>
+#include <vector>
 
 #include "mesh_checks.h"
 #include "surface_error.h"
@@ -92,4 +94,41 @@ TEST(Slide, SameOutputWhateverTheThreadCount) {
     EXPECT_TRUE(vrs_test::same_bits(one.out, other.out)) << t << " threads";
     EXPECT_EQ(one.r.slid, other.r.slid);
   }
+}
+
+// Faces the caller writes back whole as polygons (Options::polygon_faces, MeshLab's faux
+// edges): the slide leaves the fans holding one the run left untouched, so the input faces
+// that survive are the run's; unflagged, the slide rewrites some of them too.
+TEST(Slide, UntouchedPolygonFacesStayWhole) {
+  size_t rewritten_unflagged = 0;
+  for (const char* name : {"plate-slots", "threaded-short", "fandisk"}) {
+    SCOPED_TRACE(name);
+    const vrs::Mesh in = vrs_test::read_off(std::string(VRS_MESHES "/") + name + ".off");
+    const std::vector<uint8_t> all(in.face_count(), 1);
+    vrs::Options flagged = at(0.1, true);
+    flagged.polygon_faces = &all;
+    const Outcome on = simplify(in, flagged), off = simplify(in, at(0.1, false)),
+                  plain = simplify(in, at(0.1, true));
+    ASSERT_TRUE(on.r.ok && off.r.ok && plain.r.ok);
+    EXPECT_EQ(vrs_test::check_run(in, on.out, flagged, on.r), "");
+    auto untouched = [](const Outcome& o) {
+      std::vector<uint32_t> s;
+      for (uint32_t f : o.r.face_source)
+        if (f != vrs::kRemoved) s.push_back(f);
+      std::sort(s.begin(), s.end());
+      return s;
+    };
+    EXPECT_EQ(untouched(on), untouched(off));
+    EXPECT_EQ(untouched(plain).size() <= untouched(off).size(), true);
+    rewritten_unflagged += untouched(off).size() - untouched(plain).size();
+  }
+  EXPECT_GT(rewritten_unflagged, 0u) << "no untouched face slid: the test shows nothing";
+  // A flag array of the wrong size is refused with the mesh untouched.
+  vrs::Mesh m = vrs_test::read_off(VRS_MESHES "/fandisk.off");
+  const std::vector<uint8_t> wrong(3, 1);
+  vrs::Options o = at(0.1, true);
+  o.polygon_faces = &wrong;
+  const vrs::Report r = vrs::simplify(m, o);
+  EXPECT_FALSE(r.ok);
+  EXPECT_NE(r.message.find("polygon face array"), std::string::npos) << r.message;
 }

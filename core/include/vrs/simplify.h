@@ -125,6 +125,11 @@ struct Options {
   // Optional per-vertex lock (nonzero = never removed), size vertex_count(): selections, tile
   // borders. Not owned.
   const std::vector<uint8_t>* locked = nullptr;
+  // Optional per-face flag (nonzero = part of a polygon the caller writes back whole, as
+  // MeshLab's faux edges join a quad's two triangles), size face_count(). The slide leaves a
+  // face so flagged as the run left it, so that untouched polygons stay whole; elsewhere an
+  // untouched face is a triangle like the others. Not owned.
+  const std::vector<uint8_t>* polygon_faces = nullptr;
   // Constrained edges, as vertex index pairs (a0, b0, a1, b1, ...; either order): texture and
   // normal seams, material borders, any polyline the output must keep. A vertex on exactly two
   // constrained edges is removed only along them: both sides are re-triangulated apart and
