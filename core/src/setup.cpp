@@ -309,7 +309,7 @@ void Simplifier::prepare() {
   if (split_fans_apart(kinds)) first_prices(kinds, first);
   // Its corner in the input (the first), for the per-corner data of the faces it then joins.
   if (!corner_source_.empty()) {
-    slide_corner_.assign(n, kNone);
+    slide_corner_.assign(slide_target_.size(), kNone); // split fans: more vertices than n
     for (size_t i = 0; i < t.size(); ++i)
       if (slide_target_[t[i]] && slide_corner_[t[i]] == kNone)
         slide_corner_[t[i]] = corner_source_[i];
