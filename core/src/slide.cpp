@@ -460,7 +460,7 @@ void Simplifier::slide_index(const std::vector<uint32_t>& fans) {
   const size_t slots = slide_rank_.back();
   const uint32_t* f = input_.faces().data();
   const size_t faces = input_.faces().size() / 3;
-  auto asked = [&](uint32_t v) { return (slide_bits_[v >> 6] >> (v & 63)) & 1; };
+  auto asked = [&](uint32_t v) { return slide_slot(v) >= 0; };
   // The faces with an asked corner, found on the workers block by block (a pass over every
   // input face), then taken in order: each slot's faces and area as one thread would.
   constexpr size_t kBlock = 65536;
@@ -468,7 +468,7 @@ void Simplifier::slide_index(const std::vector<uint32_t>& fans) {
   for_each_block(&workers_, faces, kBlock, [&](size_t begin, size_t end) {
     std::vector<uint32_t>& h = hits[begin / kBlock];
     for (size_t i = begin; i < end; ++i)
-      if (asked(f[3 * i]) | asked(f[3 * i + 1]) | asked(f[3 * i + 2])) h.push_back(uint32_t(i));
+      if (asked(f[3 * i]) || asked(f[3 * i + 1]) || asked(f[3 * i + 2])) h.push_back(uint32_t(i));
   });
   auto each_corner = [&](auto&& fn) {
     for (const auto& h : hits)
