@@ -386,10 +386,9 @@ void Simplifier::slide_commit(uint32_t v, uint32_t u, const Ring& ring) {
 }
 
 std::vector<uint32_t> Simplifier::slide_gate() {
-  // The kept interior vertices on no constrained edge, whose faces the run all made anew,
-  // scored by their carried points'
-  // distances to the faces carrying them (their nearest when handed over); the kSlideFans
-  // highest, in vertex order.
+  // The kept interior vertices on no constrained edge and no untouched half of a polygon,
+  // scored by their carried points' distances to the faces carrying them (their nearest when
+  // handed over); the kSlideFans highest, in vertex order.
   const uint32_t* tris = mesh_.triangles.data();
   std::vector<uint32_t> kept;
   for (size_t v = 0; v < flags_.size(); ++v)
