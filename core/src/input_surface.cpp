@@ -268,51 +268,90 @@ bool InputSurface::any_agrees(Vec3 x, double r2, Vec3 n, const Evaluator& eval) 
   return false;
 }
 
+bool InputSurface::turned_at(Vec3 x, Vec3 n, const Evaluator& eval, size_t& hint) const {
+  double d2;
+  Vec3 nearest_normal;
+  if (!nearest(x, eval, d2, nearest_normal, &hint) || dot(nearest_normal, n) > 0) return false;
+  // Ties (an input edge or crease nearest): measured again with a hair of slack, relative
+  // to the point's magnitude (an absolute one took in the whole of a cube 2e-41 wide).
+  return !any_agrees(x, tie_reach2(d2, x), n, eval);
+}
+
+int InputSurface::grid_side(double covers, int max_side) {
+  // The centroids of the triangle's L x L sub-triangles: at L = 2 its centroid and halfway
+  // from there to each corner (four points, not the centroid alone: one missed folds the
+  // benchmark then measured, 1 % p90 of the error ratio 2.40 against 2.04, 14 folded runs
+  // against 5); L grows with the square root of how many input faces it covers, as four
+  // points missed folds on small outputs (tuning set, 1 % p90 1.86 -> 1.69). About a point
+  // every two faces covered, up to 12 x 12 (not one every four, up to 6 x 6): folds of a
+  // tenth of a triangle between the coarser grid's points are seen (tuning set: runs > 1 %
+  // folded where QECD's are not 6 -> 4, the same time; bench/ablation.md).
+  // Clamped before the conversion: a triangle 1e37 times the mean input face (the fuzzer)
+  // made a side past any int.
+  const double side = std::ceil(std::sqrt(covers) * kGridPerSide);
+  const int most = std::max(2, std::min(kGridMax, max_side));
+  return side >= most ? most : side > 2 ? int(side) : 2;
+}
+
+template <class Visit>
+bool InputSurface::each_grid_point(Vec3 a, Vec3 b, Vec3 c, int L, Visit&& visit) {
+  for (int i = 0; i < L; ++i)
+    for (int j = 0; i + j < L; ++j) {
+      const int k = L - 1 - i - j; // the sub-triangle pointing up at (i, j, k)
+      if (visit((a * (i + 1.0 / 3) + b * (j + 1.0 / 3) + c * (k + 1.0 / 3)) * (1.0 / L)))
+        return true;
+      if (k >= 1 &&
+          visit((a * (i + 2.0 / 3) + b * (j + 2.0 / 3) + c * (k - 1 + 2.0 / 3)) * (1.0 / L)))
+        return true;
+    }
+  return false;
+}
+
 bool InputSurface::folds(const Patch& patch, const Evaluator& eval, double min_covers,
                          int max_side) const {
   build(eval);
   size_t hint = kNoFace; // the sample points are asked in order, each near the one before
-  auto turned_at = [&](Vec3 x, Vec3 n) {
-    double d2;
-    Vec3 nearest_normal;
-    if (!nearest(x, eval, d2, nearest_normal, &hint) || dot(nearest_normal, n) > 0) return false;
-    // Ties (an input edge or crease nearest): measured again with a hair of slack, relative
-    // to the point's magnitude (an absolute one took in the whole of a cube 2e-41 wide).
-    const double r2 = tie_reach2(d2, x);
-    return !any_agrees(x, r2, n, eval);
-  };
   for (int t = 0; t < patch.count; ++t) {
     const auto& tri = patch.tri[t];
     const Vec3 a = patch.q[tri[0]], b = patch.q[tri[1]], c = patch.q[tri[2]];
     const Vec3 area_normal = cross(b - a, c - a);
     const Vec3 n = normalized(area_normal);
-    // The centroids of the triangle's L x L sub-triangles: at L = 2 its centroid and halfway
-    // from there to each corner (four points, not the centroid alone: one missed folds the
-    // benchmark then measured, 1 % p90 of the error ratio 2.40 against 2.04, 14 folded runs
-    // against 5); L grows with the square root of how many input faces it covers, as four
-    // points missed folds on small outputs (tuning set, 1 % p90 1.86 -> 1.69). About a point
-    // every two faces covered, up to 12 x 12 (not one every four, up to 6 x 6): folds of a
-    // tenth of a triangle between the coarser grid's points are seen (tuning set: runs > 1 %
-    // folded where QECD's are not 6 -> 4, the same time; bench/ablation.md).
     const double covers = 0.5 * length(area_normal) / mean_area_;
     if (covers < min_covers) continue;
-    // Clamped before the conversion: a triangle 1e37 times the mean input face (the fuzzer)
-    // made a side past any int.
-    const double side = std::ceil(std::sqrt(covers) * kGridPerSide);
-    const int most = std::max(2, std::min(kGridMax, max_side));
-    const int L = side >= most ? most : side > 2 ? int(side) : 2;
-    for (int i = 0; i < L; ++i)
-      for (int j = 0; i + j < L; ++j) {
-        const int k = L - 1 - i - j; // the sub-triangle pointing up at (i, j, k)
-        if (turned_at((a * (i + 1.0 / 3) + b * (j + 1.0 / 3) + c * (k + 1.0 / 3)) * (1.0 / L), n))
-          return true;
-        if (k >= 1 &&
-            turned_at((a * (i + 2.0 / 3) + b * (j + 2.0 / 3) + c * (k - 1 + 2.0 / 3)) * (1.0 / L),
-                      n))
-          return true;
-      }
+    if (each_grid_point(a, b, c, grid_side(covers, max_side),
+                        [&](Vec3 x) { return turned_at(x, n, eval, hint); }))
+      return true;
   }
   return false;
+}
+
+double InputSurface::folded_area(const Patch& patch, const Evaluator& eval, double min_area,
+                                 double budget) const {
+  build(eval);
+  size_t hint = kNoFace;
+  double folded = 0;
+  const double inf = std::numeric_limits<double>::infinity();
+  for (int t = 0; t < patch.count; ++t) {
+    const auto& tri = patch.tri[t];
+    const Vec3 a = patch.q[tri[0]], b = patch.q[tri[1]], c = patch.q[tri[2]];
+    const Vec3 area_normal = cross(b - a, c - a);
+    const double area = 0.5 * length(area_normal);
+    if (!(area >= min_area)) continue;
+    const Vec3 n = normalized(area_normal);
+    // Cells of a quarter of the budget at most (the finest grid for no budget): a fold that
+    // could pass it spans a few of them. The tuning set's runs more than 1 % folded where
+    // QECD's are not: one; on the full grid none, for twice its small runs' time; on the grid
+    // of folds() (by faces covered) two (bench/ablation.md, 2026-11-29).
+    const double cells = budget < inf ? kCellsPerBudget * area / budget : kGridMax * kGridMax;
+    const int L = std::max(2, std::min(kGridMax, int(std::ceil(std::sqrt(cells)))));
+    const double per_point = area / double(L * L); // L * L sub-triangles of equal area
+    if (each_grid_point(a, b, c, L, [&](Vec3 x) {
+          folded += turned_at(x, n, eval, hint) ? per_point : 0.0;
+          return folded > budget;
+        }))
+      break;
+  }
+  return folded;
 }
 
 } // namespace vrs

@@ -62,6 +62,11 @@ class InputSurface {
   // grid's side is at most `max_side` (2: the four points).
   bool folds(const Patch& patch, const Evaluator& eval, double min_covers = 0,
              int max_side = kGridMax) const;
+  // The area of the patch's new triangles of at least `min_area` that turns more than 90
+  // degrees from the input face nearest it, each point of a grid like folds()'s standing for
+  // its sub-triangle; counted until it passes `budget` (then a value past it).
+  double folded_area(const Patch& patch, const Evaluator& eval, double min_area,
+                     double budget) const;
 
   // The centroids' range [lo, hi] (the whole range, given) cut down to the bulk of the faces:
   // past kBulkSpan interquartile widths (the widest axis's) from the middle half. The
@@ -77,7 +82,8 @@ class InputSurface {
   static constexpr int kLeaf = 4;
   static constexpr double kGridPerSide = 0.75; // grid cells along a side per sqrt(faces covered)
   static constexpr int kGridMax = 12;
-  static constexpr double kBulkSpan = 16; // see clamp_to_bulk
+  static constexpr double kCellsPerBudget = 4; // folded_area's grid: cells per budget's area
+  static constexpr double kBulkSpan = 16;      // see clamp_to_bulk
   struct Box {
     float lo[3], hi[3];
   };
@@ -98,6 +104,14 @@ class InputSurface {
   void order_faces(const Evaluator& eval) const; // the leaves' order, a median split at each level
   // Whether any face within sqrt(r2) of x has a normal with a positive dot product with n.
   bool any_agrees(Vec3 x, double r2, Vec3 n, const Evaluator& eval) const;
+  // Whether a triangle facing n turns from the input at its point x, ties answered by any
+  // agreeing face; `hint` as nearest()'s.
+  bool turned_at(Vec3 x, Vec3 n, const Evaluator& eval, size_t& hint) const;
+  // The grid's cells a side for a triangle covering `covers` input faces (by area).
+  static int grid_side(double covers, int max_side);
+  // Calls visit(x) at the centroid of each of a triangle's L x L sub-triangles, in order,
+  // until it answers true (then true).
+  template <class Visit> static bool each_grid_point(Vec3 a, Vec3 b, Vec3 c, int L, Visit&& visit);
   Vec3 face_normal(size_t f, const Evaluator& eval) const;
 
   // Writes the mutable members below: const because the hierarchy is built on first use,

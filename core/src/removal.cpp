@@ -53,6 +53,18 @@ bool star_direction(uint32_t v, const Ring& ring, const Evaluator& eval, Vec3& o
   return false;
 }
 
+bool Planner::large_triangles_fold(const Patch& patch) const {
+  const double twice = 2 * limits_->large_triangle_area; // the cross product's length
+  for (int t = 0; t < patch.count; ++t) {
+    const auto& tri = patch.tri[t];
+    const Vec3 a = patch.q[tri[0]];
+    if (length(cross(patch.q[tri[1]] - a, patch.q[tri[2]] - a)) >= twice)
+      return input_->folded_area(patch, *eval_, limits_->large_triangle_area,
+                                 limits_->fold_budget) > limits_->fold_budget;
+  }
+  return false;
+}
+
 Reject Planner::plan(uint32_t v, const Ring& ring, Vec3 n, Patch& out, double& cost,
                      bool check_topology, OpenRing open, bool price, int hint) const {
   const int k = ring.verts;
@@ -80,12 +92,16 @@ Reject Planner::plan(uint32_t v, const Ring& ring, Vec3 n, Patch& out, double& c
     // ask: a smooth mesh never builds the input's hierarchy (0.35 s and 19 MB at 1.2 M faces;
     // gated at 18 degrees bunny00 x2 asked 478 times and was refused nothing; ungated, 2-4x
     // the time), and the tuning set folds as little as at 18 degrees (bench/ablation.md).
+    // Large triangles (a small output's) are asked whatever their corners say, and refused
+    // only past a budget of folded area: refused at any fold, the thin CAD shells' 10 % runs
+    // lost more to the error than they gained (bench/ablation.md, 2026-11-29).
     if (why == RejectCount && check_topology && input_) {
       const bool eased = limits_->folds_judged_by_input; // the vetoes eased, the input kept
-      if ((eased || out.corner_doubts) &&
-          (eased ? input_->folds(out, *eval_)
-                 : input_->folds(out, *eval_, kInputCheckCovers, kInputCheckSide)))
-        why = RejectFoldOver;
+      const bool folds = eased ? input_->folds(out, *eval_)
+                               : (out.corner_doubts &&
+                                  input_->folds(out, *eval_, kInputCheckCovers, kInputCheckSide)) ||
+                                     large_triangles_fold(out);
+      if (folds) why = RejectFoldOver;
     }
     // A seam's sides are bounded together, by plan_seam.
     if (why == RejectCount && face_bound_ && open == OpenRing::Border)

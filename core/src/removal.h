@@ -77,12 +77,17 @@ class Planner {
   void set_carried(const CarriedPoints* carried) { carried_ = carried; }
   // Judges fold-overs against the input's nearest faces too (InputSurface::folds): every
   // triangle in the eased passes, elsewhere those over kInputCheckCovers input faces whose
-  // corners' normals are unsure, at most kInputCheckSide grid cells a side. nullptr: not.
+  // corners' normals are unsure, at most kInputCheckSide grid cells a side, and, whatever
+  // their corners, those of limits.large_triangle_area, refused past limits.fold_budget of
+  // folded area. nullptr: not.
   void set_input(const InputSurface* input) { input_ = input; }
   static constexpr double kInputCheckCovers = 8.0;
   static constexpr int kInputCheckSide = 2;
 
  private:
+  // Whether the patch's triangles of limits.large_triangle_area fold over more than
+  // limits.fold_budget of area (none that large: false, the input not asked).
+  bool large_triangles_fold(const Patch& patch) const;
   const Evaluator* eval_;
   const Topology* topo_;
   const uint32_t* tris_;

@@ -134,6 +134,12 @@ void Simplifier::first_prices(UninitVector<uint8_t>& kinds, UninitVector<FirstPr
       },
       1024);
   reference_area_ = mean_triangle_area(mesh_.positions.data(), t, &workers_);
+  // A thousandth of the area asked, a patch refused past a two-thousandth folded (tuning set,
+  // bench/ablation.md, 2026-11-29: runs > 1 % folded where QECD's are not 4 -> 1, median
+  // 1.031 -> 1.028; refused at any folded point, the thin CAD shells lost more error).
+  const double input_area = reference_area_ * double(t.size() / 3);
+  limits_.large_triangle_area = 1e-3 * input_area;
+  limits_.fold_budget = 5e-4 * input_area;
   planner_ =
       Planner(eval_, topo_, t.data(), normals_.data(), limits_, Pricer{&estimate, &price, this},
               opt_.fill == Fill::Best, opt_.mode != Mode::Surface3D);

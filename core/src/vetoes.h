@@ -35,6 +35,13 @@ struct RemovalLimits {
   // nothing: a thread's groove wall, under a ridge leaning over the core, refused every filling
   // of the ridge's vertices, and the threaded parts stopped at twice their target.
   bool folds_judged_by_input = false;
+  // New triangles at least this large (area) are asked against the input's nearest faces in
+  // every pass, their corners sure or not, and a patch whose such triangles fold over more
+  // than `fold_budget` of area is refused: on an output of a few hundred faces one folded
+  // triangle is a percent of the area, and corners far apart by then vouch for little. Shares
+  // of the input's area (setup), so that a large run's triangles never reach them.
+  double large_triangle_area = std::numeric_limits<double>::infinity();
+  double fold_budget = std::numeric_limits<double>::infinity();
   // With an error bound tracked (Options::max_error): no new face's certified bound above it.
   double max_error = std::numeric_limits<double>::infinity();
 };

@@ -250,6 +250,31 @@ TEST(InputSurface, ATriangleOverHundredsOfFacesIsSampledOnAFineGrid) {
   EXPECT_FALSE(surface.folds(large, eval, 0, 6)); // the coarser grid misses it
 }
 
+// The folded area of a large triangle is the part of it nearer a face turned against it: a
+// square of side 10 hanging 0.1 above a triangle of area 800 that stands 0.3 above the sheet
+// is nearer than the sheet over a square of side about 10.56 (111), counted in cells of
+// 800 / 144. Each point of the grid folds the triangle or the one turned over: the two add
+// up to the whole. Counting stops once the budget is passed; triangles under `min_area` are
+// not asked.
+TEST(InputSurface, FoldedAreaIsTheShareOfATriangleTurnedFromTheInputNearestIt) {
+  vrs::Mesh input = vrs_test::grid(40);
+  const double h = 0.3;
+  const vrs::Patch large = patch_of({0, 0, h}, {40, 0, h}, {0, 40, h});
+  const vrs::Patch turned = patch_of({0, 0, h}, {0, 40, h}, {40, 0, h});
+  add_overhang(input, 12, 12, 5, float(h + 0.1));
+  const vrs::Evaluator eval = evaluator(input);
+  vrs::InputSurface surface;
+  surface.keep(input.triangles);
+  const double inf = std::numeric_limits<double>::infinity();
+  const double folded = surface.folded_area(large, eval, 0, inf);
+  EXPECT_NEAR(folded, 111, 4 * 800.0 / 144);
+  EXPECT_NEAR(folded + surface.folded_area(turned, eval, 0, inf), 800, 1e-6);
+  const double stopped = surface.folded_area(large, eval, 0, 10.0);
+  EXPECT_GT(stopped, 10.0);                                   // past the budget
+  EXPECT_LT(stopped, folded);                                 // the rest not counted
+  EXPECT_EQ(surface.folded_area(large, eval, 801, inf), 0.0); // under min_area: not asked
+}
+
 // A triangle past any grid (1e40 times the mean input face, as the fuzzer made one) is
 // sampled on the largest grid: the side is clamped before it becomes an int (UBSan: a side
 // of 6.5e18 converted was undefined).

@@ -59,7 +59,9 @@ TEST_P(RealMesh, KeepsTheInvariants) {
   // left would fold the surface over the input, or where the next removal would change the
   // surface abruptly (elephant: 160 faces for 56, a thin leg or trunk down to a prism; MeshLab's
   // QECD with Preserve Topology gets there by folding 14 % of the area over); an open one with
-  // its boundary kept may stop short too, and then the report says the boundary is why.
+  // its boundary kept may stop short too, and then the report says the boundary is why, or
+  // that every filling left would fold (mushroom at 1 %, a few faces over, since small
+  // outputs' large faces are asked of the input).
   if (ratio >= 0.1) {
     EXPECT_TRUE(r.target_reached) << m.face_count() << " faces for " << target;
   } else if (before.boundary == 0) {
@@ -67,7 +69,8 @@ TEST_P(RealMesh, KeepsTheInvariants) {
       EXPECT_TRUE(vrs_test::stops_faithfully(r.stop_detail)) << r.stop_detail;
     }
   } else if (!r.target_reached) {
-    EXPECT_NE(r.stop_detail.find("boundary simplification is off"), std::string::npos)
+    EXPECT_TRUE(r.stop_detail.find("boundary simplification is off") != std::string::npos ||
+                vrs_test::stops_faithfully(r.stop_detail))
         << r.stop_detail;
   }
   RecordProperty("faces", int(m.face_count()));
