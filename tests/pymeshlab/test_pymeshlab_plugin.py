@@ -60,8 +60,10 @@ def test_shipped_meshes_reach_target_or_say_why(plugin, meshes, name, ratio):
         # Short of the target: the dict says why (no removable vertex left) and what kept them.
         assert len(f_out) > target and r["stop_reason"] == 3
         assert r["rejected_total"] > 0 or r["kept_boundary"] > 0
+        # An open mesh: its kept border, or (the border simplified: mushroom at 1 %, two faces
+        # over) the vetoes, the fold-over's among them (every filling left would fold).
         if name not in CLOSED:
-            assert r["kept_boundary"] > 0
+            assert r["kept_boundary"] > 0 or (r["boundary_simplified"] and r["rejected_fold_over"] > 0)
 
 
 def test_boundary_kept_unless_the_target_needs_it(plugin, meshes):
