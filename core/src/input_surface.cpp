@@ -342,8 +342,10 @@ double InputSurface::folded_area(const Patch& patch, const Evaluator& eval, doub
     // could pass it spans a few of them. The tuning set's runs more than 1 % folded where
     // QECD's are not: one; on the full grid none, for twice its small runs' time; on the grid
     // of folds() (by faces covered) two (bench/ablation.md, 2026-11-29).
-    const double cells = budget < inf ? kCellsPerBudget * area / budget : kGridMax * kGridMax;
-    const int L = std::max(2, std::min(kGridMax, int(std::ceil(std::sqrt(cells)))));
+    // Clamped before the conversion: a zero or denormal budget makes the side past any int.
+    const double side =
+        budget < inf ? std::ceil(std::sqrt(kCellsPerBudget * area / budget)) : kGridMax;
+    const int L = side < kGridMax ? std::max(2, int(side)) : kGridMax;
     const double per_point = area / double(L * L); // L * L sub-triangles of equal area
     if (each_grid_point(a, b, c, L, [&](Vec3 x) {
           folded += turned_at(x, n, eval, hint) ? per_point : 0.0;

@@ -255,7 +255,7 @@ TEST(InputSurface, ATriangleOverHundredsOfFacesIsSampledOnAFineGrid) {
 // is nearer than the sheet over a square of side about 10.56 (111), counted in cells of
 // 800 / 144. Each point of the grid folds the triangle or the one turned over: the two add
 // up to the whole. Counting stops once the budget is passed; triangles under `min_area` are
-// not asked.
+// not asked; a budget of nothing stops at the first point folded.
 TEST(InputSurface, FoldedAreaIsTheShareOfATriangleTurnedFromTheInputNearestIt) {
   vrs::Mesh input = vrs_test::grid(40);
   const double h = 0.3;
@@ -273,6 +273,9 @@ TEST(InputSurface, FoldedAreaIsTheShareOfATriangleTurnedFromTheInputNearestIt) {
   EXPECT_GT(stopped, 10.0);                                   // past the budget
   EXPECT_LT(stopped, folded);                                 // the rest not counted
   EXPECT_EQ(surface.folded_area(large, eval, 801, inf), 0.0); // under min_area: not asked
+  // A zero or denormal budget (an input of denormal area): the finest grid, no overflow.
+  EXPECT_GT(surface.folded_area(large, eval, 0, 0.0), 0.0);
+  EXPECT_GT(surface.folded_area(large, eval, 0, 1e-310), 1e-310);
 }
 
 // A triangle past any grid (1e40 times the mean input face, as the fuzzer made one) is
