@@ -58,12 +58,13 @@ class FanBounds {
                    (1 + 1e-12);
     }
   }
-  // The squared distance from p to the fan: the least of its triangles'.
+  // The squared distance from p to the fan: the least of its triangles' (a NaN one, from a
+  // corner not finite, passed over as std::min does).
   double nearest2(Vec3 p) {
-    double best = distance2(p, hint_), s = std::sqrt(best);
+    double best = std::numeric_limits<double>::infinity(), s = best;
     const int first = hint_;
-    for (int t = 0; t < patch_.count; ++t) {
-      if (t == first) continue;
+    for (int i = 0; i < patch_.count; ++i) {
+      const int t = i == 0 ? first : i == first ? 0 : i; // the last point's nearest first
       const Vec3 d = p - centre_[t];
       const double reach = radius_[t] + s;
       if (dot(d, d) > reach * reach) continue; // no point of it is nearer than s
