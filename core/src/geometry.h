@@ -82,4 +82,20 @@ inline double triangle_quality(Vec3 a, Vec3 b, Vec3 c) {
   return sum > 0 ? 3.4641016151377544 * area2 / sum : 0.0; // 2√3 = 4√3 / 2
 }
 
+// Calls visit(x) at the centroid of each of the triangle (a, b, c)'s L x L sub-triangles, in
+// order (each row's upward one, then the downward one beside it), until it answers true (then
+// true): the sample points every fold-over and distance measure on a new triangle uses.
+template <class Visit> bool each_grid_point(Vec3 a, Vec3 b, Vec3 c, int L, Visit&& visit) {
+  for (int i = 0; i < L; ++i)
+    for (int j = 0; i + j < L; ++j) {
+      const int k = L - 1 - i - j; // the sub-triangle pointing up at (i, j, k)
+      if (visit((a * (i + 1.0 / 3) + b * (j + 1.0 / 3) + c * (k + 1.0 / 3)) * (1.0 / L)))
+        return true;
+      if (k >= 1 &&
+          visit((a * (i + 2.0 / 3) + b * (j + 2.0 / 3) + c * (k - 1 + 2.0 / 3)) * (1.0 / L)))
+        return true;
+    }
+  return false;
+}
+
 } // namespace vrs

@@ -293,20 +293,6 @@ int InputSurface::grid_side(double covers, int max_side) {
   return side >= most ? most : side > 2 ? int(side) : 2;
 }
 
-template <class Visit>
-bool InputSurface::each_grid_point(Vec3 a, Vec3 b, Vec3 c, int L, Visit&& visit) {
-  for (int i = 0; i < L; ++i)
-    for (int j = 0; i + j < L; ++j) {
-      const int k = L - 1 - i - j; // the sub-triangle pointing up at (i, j, k)
-      if (visit((a * (i + 1.0 / 3) + b * (j + 1.0 / 3) + c * (k + 1.0 / 3)) * (1.0 / L)))
-        return true;
-      if (k >= 1 &&
-          visit((a * (i + 2.0 / 3) + b * (j + 2.0 / 3) + c * (k - 1 + 2.0 / 3)) * (1.0 / L)))
-        return true;
-    }
-  return false;
-}
-
 bool InputSurface::folds(const Patch& patch, const Evaluator& eval, double min_covers,
                          int max_side) const {
   build(eval);

@@ -67,6 +67,9 @@ class InputSurface {
   // its sub-triangle; counted until it passes `budget` (then a value past it).
   double folded_area(const Patch& patch, const Evaluator& eval, double min_area,
                      double budget) const;
+  // The grid's cells a side (each_grid_point's L) for a triangle covering `covers` input
+  // faces (by area): 2 to max_side, growing with the square root.
+  static int grid_side(double covers, int max_side = kGridMax);
 
   // The centroids' range [lo, hi] (the whole range, given) cut down to the bulk of the faces:
   // past kBulkSpan interquartile widths (the widest axis's) from the middle half. The
@@ -107,11 +110,6 @@ class InputSurface {
   // Whether a triangle facing n turns from the input at its point x, ties answered by any
   // agreeing face; `hint` as nearest()'s.
   bool turned_at(Vec3 x, Vec3 n, const Evaluator& eval, size_t& hint) const;
-  // The grid's cells a side for a triangle covering `covers` input faces (by area).
-  static int grid_side(double covers, int max_side);
-  // Calls visit(x) at the centroid of each of a triangle's L x L sub-triangles, in order,
-  // until it answers true (then true).
-  template <class Visit> static bool each_grid_point(Vec3 a, Vec3 b, Vec3 c, int L, Visit&& visit);
   Vec3 face_normal(size_t f, const Evaluator& eval) const;
 
   // Writes the mutable members below: const because the hierarchy is built on first use,

@@ -83,26 +83,20 @@ double brute_measure(const vrs::Patch& patch, const vrs::LocalInput& in, bool& f
                c = patch.q[patch.tri[t][2]];
     const Vec3 nt = vrs::cross(b - a, c - a);
     const double w = 0.5 * vrs::length(nt);
-    for (int i = 0; i < L; ++i)
-      for (int j = 0; i + j < L; ++j) {
-        const int r = L - 1 - i - j;
-        for (int up = 0; up < (r >= 1 ? 2 : 1); ++up) {
-          const double o = up ? 2.0 / 3 : 1.0 / 3;
-          const Vec3 x = (a * (i + o) + b * (j + o) + c * (r - up + o)) * (1.0 / L);
-          std::vector<double> d2(size_t(in.count));
-          double best = std::numeric_limits<double>::infinity();
-          for (int f = 0; f < in.count; ++f)
-            best =
-                std::min(best, d2[f] = vrs::point_triangle_distance2(x, in.a[f], in.b[f], in.c[f]));
-          out += w / (L * L) * std::sqrt(best);
-          farthest = std::max(farthest, best);
-          const double tie = vrs::InputSurface::tie_reach2(best, x);
-          bool agrees = false;
-          for (int f = 0; f < in.count; ++f)
-            agrees = agrees || (d2[f] <= tie && vrs::dot(in.n[f], nt) > 0);
-          folds = folds || !agrees;
-        }
-      }
+    vrs::each_grid_point(a, b, c, L, [&](Vec3 x) {
+      std::vector<double> d2(size_t(in.count));
+      double best = std::numeric_limits<double>::infinity();
+      for (int f = 0; f < in.count; ++f)
+        best = std::min(best, d2[f] = vrs::point_triangle_distance2(x, in.a[f], in.b[f], in.c[f]));
+      out += w / (L * L) * std::sqrt(best);
+      farthest = std::max(farthest, best);
+      const double tie = vrs::InputSurface::tie_reach2(best, x);
+      bool agrees = false;
+      for (int f = 0; f < in.count; ++f)
+        agrees = agrees || (d2[f] <= tie && vrs::dot(in.n[f], nt) > 0);
+      folds = folds || !agrees;
+      return false;
+    });
   }
   return out;
 }
