@@ -175,3 +175,33 @@ def test_serve_streams_ranges_and_the_page(sphere, tmp_path):
     finally:
         server.terminate()
         server.wait(10)
+
+
+def test_serve_throttles_the_model_not_the_page(sphere, tmp_path):
+    """`--throttle` holds the .glb to its rate; the page and three.js, which a browser caches,
+    come at full speed (a 1 MB three.js at the model's rate would cost every page load)."""
+    import subprocess
+    import time
+    import urllib.request
+
+    v, f = sphere
+    vrsimplify.write_glb(tmp_path / "m.glb", v, vrsimplify.lods(v, f, [1, 0.1]))
+    size = (tmp_path / "m.glb").stat().st_size
+    rate = 4 * size  # the whole .glb in a quarter of a second
+    server = subprocess.Popen(["vrsimplify", "serve", str(tmp_path / "m.glb"), "--port", "0",
+                               "--throttle", str(rate)], stdout=subprocess.PIPE, text=True)
+    try:
+        base = server.stdout.readline().split(" at ")[1].split()[0]
+
+        def timed(path):
+            t0 = time.monotonic()
+            n = len(urllib.request.urlopen(base + path).read())
+            return n, time.monotonic() - t0
+
+        n, t = timed("m.glb")
+        assert n == size and t >= 0.2, f"{n} bytes of the model in {t:.3f} s at {rate} B/s"
+        n, t = timed("three/build/three.module.js")
+        assert n > 2 * rate and t < n / rate / 4, f"three.js: {n} bytes in {t:.3f} s"
+    finally:
+        server.terminate()
+        server.wait(10)

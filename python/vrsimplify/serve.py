@@ -4,8 +4,9 @@
     python -m vrsimplify.serve OUT.glb ...
 
 Open the printed address: the page draws the coarsest level as soon as its bytes arrive and
-swaps in the finer ones. ``--throttle`` slows every response to that rate, to watch (or test)
-a model arriving over a slow network. Only the .glb and the files beside it (its texture) are
+swaps in the finer ones. ``--throttle`` slows the model's responses (the .glb and its texture)
+to that rate, to watch (or test) a model arriving over a slow network; the page and three.js,
+which a browser keeps cached, come at full speed. Only the .glb and the files beside it (its texture) are
 served (by the URLs it names them with), besides the page and three.js.
 """
 from __future__ import annotations
@@ -66,6 +67,7 @@ def images_of(glb: pathlib.Path) -> dict[str, pathlib.Path]:
 def make_handler(glb: pathlib.Path, web: pathlib.Path, throttle: float, log: bool):
     three = three_root(web)
     images = images_of(glb)  # only these files beside the page, three.js and the .glb
+    model_files = set(images.values())
 
     class Handler(http.server.BaseHTTPRequestHandler):
         protocol_version = "HTTP/1.1"
@@ -133,6 +135,7 @@ def make_handler(glb: pathlib.Path, web: pathlib.Path, throttle: float, log: boo
             if status == 206:
                 self.send_header("Content-Range", f"bytes {start}-{end - 1}/{size}")
             self.end_headers()
+            rate = throttle if f == glb or f in model_files else 0
             with open(f, "rb") as src:
                 src.seek(start)
                 left = end - start
@@ -149,8 +152,8 @@ def make_handler(glb: pathlib.Path, web: pathlib.Path, throttle: float, log: boo
                         return
                     left -= len(data)
                     sent += len(data)
-                    if throttle > 0:  # hold the rate to `throttle` bytes a second
-                        ahead = sent / throttle - (time.monotonic() - t0)
+                    if rate > 0:  # hold the rate to `throttle` bytes a second
+                        ahead = sent / rate - (time.monotonic() - t0)
                         if ahead > 0:
                             time.sleep(ahead)
 
@@ -162,7 +165,7 @@ def main(argv: list[str] | None = None) -> int:
     p.add_argument("glb", type=pathlib.Path, help="the .glb to serve (vrsimplify IN OUT.glb --lods ...)")
     p.add_argument("--host", default="127.0.0.1")
     p.add_argument("--port", type=int, default=8000, help="0: any free port (printed)")
-    p.add_argument("--throttle", type=float, default=0, help="bytes a second per response (0: full speed)")
+    p.add_argument("--throttle", type=float, default=0, help="bytes a second per response of the model: the .glb and its texture (0: full speed)")
     p.add_argument("--log", action="store_true", help="print every request")
     a = p.parse_args(argv)
     if not a.glb.is_file():
