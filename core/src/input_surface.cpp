@@ -31,47 +31,42 @@ void InputSurface::clamp_to_bulk(const std::function<Vec3(size_t)>& centroid, si
     hi[a] = std::min(hi[a], q3[a] + kBulkSpan * width);
 }
 
-void InputSurface::order_faces(const Evaluator& eval) const {
+UninitVector<uint32_t> InputSurface::split_order(size_t count,
+                                                 const std::function<Vec3(size_t)>& centroid) {
   // Top-down median splits on the centroids' widest axis, into the implicit layout the levels
-  // read: a node of 2^l leaf slots gives its left child exactly 2^(l-1) * kLeaf faces (or all
+  // read: a node of 2^l leaf slots gives its left child exactly 2^(l-1) * kLeaf items (or all
   // it has), so node i of a level has children 2i and 2i + 1 below.
   // The centroids to 16 bits an axis, one scale for all three (6 bytes a face where floats
   // took 12, and the faces permuted in place: this set-up was the run's peak, 7 MB above the
   // hierarchy it leaves at 300 k faces). Any split gives the same answers: folds() asks the
   // nearest face, then every face as near (ties), so the hierarchy decides only how fast.
-  const size_t faces = tris_.size() / 3;
-  auto centroid = [&](size_t f) {
-    return (eval.position(tris_[3 * f]) + eval.position(tris_[3 * f + 1]) +
-            eval.position(tris_[3 * f + 2])) *
-           (1.0 / 3);
-  };
   double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-  for (size_t f = 0; f < faces; ++f) {
+  for (size_t f = 0; f < count; ++f) {
     const Vec3 c = centroid(f);
     const double x[3] = {c.x, c.y, c.z};
     for (int a = 0; a < 3; ++a)
       lo[a] = std::min(lo[a], x[a]), hi[a] = std::max(hi[a], x[a]);
   }
-  clamp_to_bulk(centroid, faces, lo, hi);
+  clamp_to_bulk(centroid, count, lo, hi);
   const double extent = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
   const double scale = extent > 0 && std::isfinite(extent) ? 65535.0 / extent : 0.0;
-  std::vector<std::array<uint16_t, 3>> centre(faces);
-  for (size_t f = 0; f < faces; ++f) {
+  std::vector<std::array<uint16_t, 3>> centre(count);
+  for (size_t f = 0; f < count; ++f) {
     const Vec3 c = centroid(f);
     const double x[3] = {c.x, c.y, c.z};
     for (int a = 0; a < 3; ++a)
       centre[f][a] = uint16_t(std::min(65535.0, std::max(0.0, (x[a] - lo[a]) * scale + 0.5)));
   }
-  UninitVector<uint32_t> order(faces);
-  for (size_t f = 0; f < faces; ++f)
+  UninitVector<uint32_t> order(count);
+  for (size_t f = 0; f < count; ++f)
     order[f] = uint32_t(f);
   size_t slots = 1;
-  while (slots * kLeaf < faces)
+  while (slots * kLeaf < count)
     slots *= 2;
   struct Range {
     size_t begin, end, slots;
   };
-  std::vector<Range> todo{{0, faces, slots}};
+  std::vector<Range> todo{{0, count, slots}};
   while (!todo.empty()) {
     const Range r = todo.back();
     todo.pop_back();
@@ -92,7 +87,16 @@ void InputSurface::order_faces(const Evaluator& eval) const {
     }
     todo.push_back({r.begin, left, r.slots / 2});
   }
-  std::vector<std::array<uint16_t, 3>>().swap(centre);
+  return order;
+}
+
+void InputSurface::order_faces(const Evaluator& eval) const {
+  const size_t faces = tris_.size() / 3;
+  UninitVector<uint32_t> order = split_order(faces, [&](size_t f) {
+    return (eval.position(tris_[3 * f]) + eval.position(tris_[3 * f + 1]) +
+            eval.position(tris_[3 * f + 2])) *
+           (1.0 / 3);
+  });
   // Face i takes face order[i], cycle by cycle; a placed entry is marked order[i] = i.
   for (size_t i = 0; i < faces; ++i) {
     if (order[i] == i) continue;
@@ -108,6 +112,115 @@ void InputSurface::order_faces(const Evaluator& eval) const {
       j = k;
     }
   }
+}
+
+namespace {
+
+// The box, rounded outwards to floats, of the part of triangle p between the planes where
+// dot(x - p[0], u) is t0 and t1: its corners between them and its edges' crossings of them.
+// Rounded outwards by a float step at least, so that it holds the exact part despite the
+// crossings' rounding.
+void part_box(const Vec3 p[3], Vec3 u, double t0, double t1, float lo[3], float hi[3]) {
+  double t[3], dlo[3] = {INFINITY, INFINITY, INFINITY}, dhi[3] = {-INFINITY, -INFINITY, -INFINITY};
+  auto add = [&](Vec3 x) {
+    const double c[3] = {x.x, x.y, x.z};
+    for (int a = 0; a < 3; ++a)
+      dlo[a] = std::min(dlo[a], c[a]), dhi[a] = std::max(dhi[a], c[a]);
+  };
+  for (int k = 0; k < 3; ++k) {
+    t[k] = dot(p[k] - p[0], u);
+    if (t[k] >= t0 && t[k] <= t1) add(p[k]);
+  }
+  for (int k = 0; k < 3; ++k) {
+    const int j = (k + 1) % 3;
+    for (double plane : {t0, t1})
+      if ((t[k] - plane) * (t[j] - plane) < 0)
+        add(p[k] + (p[j] - p[k]) * ((plane - t[k]) / (t[j] - t[k])));
+  }
+  for (int a = 0; a < 3; ++a) {
+    lo[a] = std::nextafter(float(dlo[a]), -INFINITY);
+    hi[a] = std::nextafter(float(dhi[a]), INFINITY);
+  }
+}
+
+} // namespace
+
+void InputSurface::cut_long_faces(const Evaluator& eval) const {
+  const size_t faces = tris_.size() / 3;
+  // How many pieces each face is cut into: a face whose box's middle extent passes kCutAt
+  // times its height (a sliver lying across the axes) into pieces about two heights across
+  // that extent, up to kMostPieces.
+  std::vector<uint8_t> pieces(faces, 1);
+  size_t cut = 0, total = 0;
+  for (size_t f = 0; f < faces; ++f) {
+    const Vec3 p[3] = {eval.position(tris_[3 * f]), eval.position(tris_[3 * f + 1]),
+                       eval.position(tris_[3 * f + 2])};
+    double longest = 0;
+    for (int k = 0; k < 3; ++k)
+      longest = std::max(longest, length(p[(k + 1) % 3] - p[k]));
+    const double height = length(cross(p[1] - p[0], p[2] - p[0])) / longest;
+    auto extent = [](double a, double b, double c) {
+      return std::max({a, b, c}) - std::min({a, b, c});
+    };
+    double e[3] = {extent(p[0].x, p[1].x, p[2].x), extent(p[0].y, p[1].y, p[2].y),
+                   extent(p[0].z, p[1].z, p[2].z)};
+    std::sort(e, e + 3);
+    if (e[1] > kCutAt * height) {
+      pieces[f] = uint8_t(std::min<double>(kMostPieces, std::ceil(e[1] / (2 * height))));
+      ++cut;
+    }
+    total += pieces[f];
+  }
+  // A few slivers in a large mesh: each question meets only those near it. Not worth an
+  // item's 4 bytes a face.
+  if (cut == 0 || cut < faces / kCutShare) return;
+  // Within the items' budget (4 bytes an item and 28 a piece), shared out by length.
+  if (total > kMostItems * faces + kItemsAnyway) {
+    const double keep = double(kMostItems * faces + kItemsAnyway - faces) / double(total - faces);
+    for (auto& k : pieces)
+      k = uint8_t(1 + std::floor((k - 1) * keep));
+  }
+  items_.resize(0);
+  pieces_.clear();
+  for (size_t f = 0; f < faces; ++f) {
+    if (pieces[f] == 1) {
+      items_.push_back(uint32_t(f));
+      continue;
+    }
+    const Vec3 p[3] = {eval.position(tris_[3 * f]), eval.position(tris_[3 * f + 1]),
+                       eval.position(tris_[3 * f + 2])};
+    int longest = 0; // the edge p[longest] -> p[longest + 1]
+    for (int k = 1; k < 3; ++k)
+      if (length(p[(k + 1) % 3] - p[k]) > length(p[(longest + 1) % 3] - p[longest])) longest = k;
+    const Vec3 u = normalized(p[(longest + 1) % 3] - p[longest]);
+    double tmin = INFINITY, tmax = -INFINITY;
+    for (const Vec3& x : p)
+      tmin = std::min(tmin, dot(x - p[0], u)), tmax = std::max(tmax, dot(x - p[0], u));
+    // Neighbouring parts overlap by a hair, and the ends reach past the corners: the crossings'
+    // rounding leaves no point of the face outside every box.
+    const double step = (tmax - tmin) / pieces[f], hair = 1e-6 * (tmax - tmin);
+    for (int i = 0; i < pieces[f]; ++i) {
+      Piece piece{uint32_t(f), {}};
+      part_box(p, u, i == 0 ? -INFINITY : tmin + i * step - hair,
+               i + 1 == pieces[f] ? INFINITY : tmin + (i + 1) * step + hair, piece.box.lo,
+               piece.box.hi);
+      items_.push_back(uint32_t(faces + pieces_.size()));
+      pieces_.push_back(piece);
+    }
+  }
+  const UninitVector<uint32_t> order = split_order(items_.size(), [&](size_t i) {
+    const uint32_t item = items_[i];
+    if (item < faces)
+      return (eval.position(tris_[3 * item]) + eval.position(tris_[3 * item + 1]) +
+              eval.position(tris_[3 * item + 2])) *
+             (1.0 / 3);
+    const Box& b = pieces_[item - faces].box;
+    return Vec3{b.lo[0] + b.hi[0], b.lo[1] + b.hi[1], b.lo[2] + b.hi[2]} * 0.5;
+  });
+  UninitVector<uint32_t> ordered(items_.size());
+  for (size_t i = 0; i < items_.size(); ++i)
+    ordered[i] = items_[order[i]];
+  items_.swap(ordered);
 }
 
 void InputSurface::build(const Evaluator& eval) const {
@@ -131,7 +244,8 @@ void InputSurface::build_now(const Evaluator& eval) const {
   if (faces == 0) return;
   mean_area_ /= double(faces);
   order_faces(eval);
-  leaves_ = (faces + kLeaf - 1) / kLeaf;
+  cut_long_faces(eval);
+  leaves_ = (item_count() + kLeaf - 1) / kLeaf;
   levels_.emplace_back(); // the leaves' boxes: made from their faces when read (leaf_box)
   size_t below = leaves_;
   while (below > 1) {
@@ -154,14 +268,21 @@ InputSurface::Box InputSurface::leaf_box(size_t leaf, const Evaluator& eval) con
   Box b;
   std::fill(b.lo, b.lo + 3, std::numeric_limits<float>::infinity());
   std::fill(b.hi, b.hi + 3, -std::numeric_limits<float>::infinity());
-  const auto [first, last] = faces_under(0, leaf);
-  for (size_t f = first; f < last; ++f)
+  const auto [first, last] = items_under(0, leaf);
+  for (size_t i = first; i < last; ++i) {
+    if (const Box* piece = piece_box(i)) {
+      for (int a = 0; a < 3; ++a)
+        b.lo[a] = std::min(b.lo[a], piece->lo[a]), b.hi[a] = std::max(b.hi[a], piece->hi[a]);
+      continue;
+    }
+    const size_t f = item_face(i);
     for (int c = 0; c < 3; ++c) {
       const Vec3 p = eval.position(tris_[3 * f + c]);
       const float x[3] = {float(p.x), float(p.y), float(p.z)}; // positions are floats
       for (int a = 0; a < 3; ++a)
         b.lo[a] = std::min(b.lo[a], x[a]), b.hi[a] = std::max(b.hi[a], x[a]);
     }
+  }
   return b;
 }
 
@@ -205,8 +326,15 @@ bool InputSurface::nearest(Vec3 x, const Evaluator& eval, double& d2, Vec3& norm
     // corners (a leaf's box is not stored), so they would save no memory traffic, only add
     // work (a third of the time where every box ties, at 1e38: fuzz/open/).
     if (level <= 1) {
-      const auto [first, last] = faces_under(level, node.index);
-      for (size_t f = first; f < last; ++f) {
+      const auto [first, last] = items_under(level, node.index);
+      size_t last_face = kNoFace;
+      for (size_t i = first; i < last; ++i) {
+        const size_t f = item_face(i);
+        // A piece is passed over when its face was just measured or its box is too far.
+        if (const Box* piece = piece_box(i);
+            piece && (f == last_face || box_distance2(*piece, x) >= best))
+          continue;
+        last_face = f;
         const double d = point_triangle_distance2(x, eval.position(tris_[3 * f]),
                                                   eval.position(tris_[3 * f + 1]),
                                                   eval.position(tris_[3 * f + 2]));
@@ -252,9 +380,10 @@ bool InputSurface::any_agrees(Vec3 x, double r2, Vec3 n, const Evaluator& eval) 
     const auto [level, index] = stack[--top];
     if (box_distance2(node_box(level, index, eval), x) > r2) continue;
     if (level <= 1) { // a node over leaves: its faces at once, as in nearest()
-      const auto [first, last] = faces_under(level, index);
-      for (size_t f = first; f < last; ++f)
-        if (dot(face_normal(f, eval), n) > 0 &&
+      const auto [first, last] = items_under(level, index);
+      for (size_t i = first; i < last; ++i)
+        if (const size_t f = item_face(i);
+            dot(face_normal(f, eval), n) > 0 &&
             point_triangle_distance2(x, eval.position(tris_[3 * f]),
                                      eval.position(tris_[3 * f + 1]),
                                      eval.position(tris_[3 * f + 2])) <= r2)

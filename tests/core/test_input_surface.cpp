@@ -119,6 +119,47 @@ TEST(InputSurface, NearestFaceIsTheOneABruteForceSearchFinds) {
   }
 }
 
+// A tube along the diagonal, each of its faces a sliver from one end to the other (as a CAD
+// tool tessellates a cylinder): each face's box is a cube over most of the tube, so the
+// hierarchy cuts them into pieces with boxes of their own (cut_long_faces). Points inside,
+// on and around the tube: the nearest face's distance as a search over every face finds it.
+TEST(InputSurface, SliversAcrossTheAxesAreSearchedAsEveryFaceWouldBe) {
+  vrs::Mesh m;
+  const int around = 128;
+  const Vec3 axis = vrs::normalized(Vec3{1, 1, 1}), e1 = vrs::normalized(Vec3{1, -1, 0}),
+             e2 = vrs::cross(axis, e1);
+  for (int end = 0; end < 2; ++end)
+    for (int i = 0; i < around; ++i) {
+      const double t = 2 * M_PI * i / around;
+      const Vec3 x = axis * (end ? 17.0 : -17.0) + (e1 * std::cos(t) + e2 * std::sin(t)) * 6.0;
+      m.positions.insert(m.positions.end(), {float(x.x), float(x.y), float(x.z)});
+    }
+  for (uint32_t i = 0; i < uint32_t(around); ++i) {
+    const uint32_t j = (i + 1) % around;
+    m.triangles.insert(m.triangles.end(), {i, j, around + j, i, around + j, around + i});
+  }
+  const vrs::Evaluator eval = evaluator(m);
+  vrs::InputSurface input;
+  input.keep(m.triangles);
+  input.build(eval);
+  std::mt19937 rng(11);
+  std::uniform_real_distribution<double> along(-19, 19), angle(0, 2 * M_PI), radius(0, 7);
+  size_t hint = vrs::InputSurface::kNoFace;
+  for (int i = 0; i < 2000; ++i) {
+    const double t = angle(rng), r = i % 4 ? 6.0 + (radius(rng) - 3.5) * 1e-3 : radius(rng);
+    const Vec3 x = axis * along(rng) + (e1 * std::cos(t) + e2 * std::sin(t)) * r;
+    double best = std::numeric_limits<double>::infinity();
+    for (size_t f = 0; f < m.face_count(); ++f)
+      best = std::min(best, vrs::point_triangle_distance2(x, eval.position(m.triangles[3 * f]),
+                                                          eval.position(m.triangles[3 * f + 1]),
+                                                          eval.position(m.triangles[3 * f + 2])));
+    double d2;
+    Vec3 n;
+    ASSERT_TRUE(input.nearest(x, eval, d2, n, &hint));
+    ASSERT_EQ(d2, best) << "point " << i << " at " << r << " from the axis";
+  }
+}
+
 // The hierarchy resolves the plate's range, not the needles' (their centroids at a third of
 // 1e30): scaled to theirs, every plate face fell in one step of its 16-bit centroids.
 TEST(InputSurface, FarVerticesDoNotStretchTheRangeTheHierarchyResolves) {
