@@ -173,15 +173,22 @@ void InputSurface::cut_long_faces(const Evaluator& eval) const {
   }
   // A few slivers in a large mesh: each question meets only those near it. Not worth an
   // item's 4 bytes a face.
-  if (cut == 0 || cut < faces / kCutShare) return;
+  if (cut == 0 || cut < faces / kCutShare ||
+      kMostItems * faces + kItemsAnyway > std::numeric_limits<uint32_t>::max())
+    return;
   // Within the items' budget (4 bytes an item and 28 a piece), shared out by length.
   if (total > kMostItems * faces + kItemsAnyway) {
     const double keep = double(kMostItems * faces + kItemsAnyway - faces) / double(total - faces);
-    for (auto& k : pieces)
+    total = 0;
+    for (auto& k : pieces) {
       k = uint8_t(1 + std::floor((k - 1) * keep));
+      total += k;
+    }
   }
-  items_.resize(0);
+  items_.clear();
+  items_.reserve(total);
   pieces_.clear();
+  pieces_.reserve(total - (faces - cut));
   for (size_t f = 0; f < faces; ++f) {
     if (pieces[f] == 1) {
       items_.push_back(uint32_t(f));

@@ -87,6 +87,16 @@ std::pair<Vec3, Vec3> bulk_range(const vrs::Mesh& m) {
   return {{lo[0], lo[1], lo[2]}, {hi[0], hi[1], hi[2]}};
 }
 
+// The squared distance from x to m's nearest face, every face read.
+double nearest_by_every_face(const vrs::Mesh& m, const vrs::Evaluator& eval, Vec3 x) {
+  double best = std::numeric_limits<double>::infinity();
+  for (size_t f = 0; f < m.face_count(); ++f)
+    best = std::min(best, vrs::point_triangle_distance2(x, eval.position(m.triangles[3 * f]),
+                                                        eval.position(m.triangles[3 * f + 1]),
+                                                        eval.position(m.triangles[3 * f + 2])));
+  return best;
+}
+
 // Also with needles out to vertices at 1e30, and searched from the answer for the point before.
 TEST(InputSurface, NearestFaceIsTheOneABruteForceSearchFinds) {
   for (const vrs::Mesh& m :
@@ -101,11 +111,7 @@ TEST(InputSurface, NearestFaceIsTheOneABruteForceSearchFinds) {
     size_t hint = vrs::InputSurface::kNoFace;
     for (int i = 0; i < 500; ++i) {
       const Vec3 x{u(rng), u(rng), u(rng) * 0.3};
-      double best = std::numeric_limits<double>::infinity();
-      for (size_t f = 0; f < m.face_count(); ++f)
-        best = std::min(best, vrs::point_triangle_distance2(x, eval.position(m.triangles[3 * f]),
-                                                            eval.position(m.triangles[3 * f + 1]),
-                                                            eval.position(m.triangles[3 * f + 2])));
+      const double best = nearest_by_every_face(m, eval, x);
       double d2;
       Vec3 n;
       ASSERT_TRUE(input.nearest(x, eval, d2, n));
@@ -124,39 +130,37 @@ TEST(InputSurface, NearestFaceIsTheOneABruteForceSearchFinds) {
 // hierarchy cuts them into pieces with boxes of their own (cut_long_faces). Points inside,
 // on and around the tube: the nearest face's distance as a search over every face finds it.
 TEST(InputSurface, SliversAcrossTheAxesAreSearchedAsEveryFaceWouldBe) {
-  vrs::Mesh m;
-  const int around = 128;
-  const Vec3 axis = vrs::normalized(Vec3{1, 1, 1}), e1 = vrs::normalized(Vec3{1, -1, 0}),
-             e2 = vrs::cross(axis, e1);
-  for (int end = 0; end < 2; ++end)
-    for (int i = 0; i < around; ++i) {
-      const double t = 2 * M_PI * i / around;
-      const Vec3 x = axis * (end ? 17.0 : -17.0) + (e1 * std::cos(t) + e2 * std::sin(t)) * 6.0;
-      m.positions.insert(m.positions.end(), {float(x.x), float(x.y), float(x.z)});
+  // 256 faces, each cut into the most pieces; 40 000, past the pieces' budget.
+  for (const auto& [around, points] : {std::pair{128, 2000}, std::pair{20000, 200}}) {
+    vrs::Mesh m;
+    const Vec3 axis = vrs::normalized(Vec3{1, 1, 1}), e1 = vrs::normalized(Vec3{1, -1, 0}),
+               e2 = vrs::cross(axis, e1);
+    for (int end = 0; end < 2; ++end)
+      for (int i = 0; i < around; ++i) {
+        const double t = 2 * M_PI * i / around;
+        const Vec3 x = axis * (end ? 17.0 : -17.0) + (e1 * std::cos(t) + e2 * std::sin(t)) * 6.0;
+        m.positions.insert(m.positions.end(), {float(x.x), float(x.y), float(x.z)});
+      }
+    for (uint32_t i = 0; i < uint32_t(around); ++i) {
+      const uint32_t j = (i + 1) % around;
+      m.triangles.insert(m.triangles.end(), {i, j, around + j, i, around + j, around + i});
     }
-  for (uint32_t i = 0; i < uint32_t(around); ++i) {
-    const uint32_t j = (i + 1) % around;
-    m.triangles.insert(m.triangles.end(), {i, j, around + j, i, around + j, around + i});
-  }
-  const vrs::Evaluator eval = evaluator(m);
-  vrs::InputSurface input;
-  input.keep(m.triangles);
-  input.build(eval);
-  std::mt19937 rng(11);
-  std::uniform_real_distribution<double> along(-19, 19), angle(0, 2 * M_PI), radius(0, 7);
-  size_t hint = vrs::InputSurface::kNoFace;
-  for (int i = 0; i < 2000; ++i) {
-    const double t = angle(rng), r = i % 4 ? 6.0 + (radius(rng) - 3.5) * 1e-3 : radius(rng);
-    const Vec3 x = axis * along(rng) + (e1 * std::cos(t) + e2 * std::sin(t)) * r;
-    double best = std::numeric_limits<double>::infinity();
-    for (size_t f = 0; f < m.face_count(); ++f)
-      best = std::min(best, vrs::point_triangle_distance2(x, eval.position(m.triangles[3 * f]),
-                                                          eval.position(m.triangles[3 * f + 1]),
-                                                          eval.position(m.triangles[3 * f + 2])));
-    double d2;
-    Vec3 n;
-    ASSERT_TRUE(input.nearest(x, eval, d2, n, &hint));
-    ASSERT_EQ(d2, best) << "point " << i << " at " << r << " from the axis";
+    const vrs::Evaluator eval = evaluator(m);
+    vrs::InputSurface input;
+    input.keep(m.triangles);
+    input.build(eval);
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> along(-19, 19), angle(0, 2 * M_PI), radius(0, 7);
+    size_t hint = vrs::InputSurface::kNoFace;
+    for (int i = 0; i < points; ++i) {
+      const double t = angle(rng), r = i % 4 ? 6.0 + (radius(rng) - 3.5) * 1e-3 : radius(rng);
+      const Vec3 x = axis * along(rng) + (e1 * std::cos(t) + e2 * std::sin(t)) * r;
+      const double best = nearest_by_every_face(m, eval, x);
+      double d2;
+      Vec3 n;
+      ASSERT_TRUE(input.nearest(x, eval, d2, n, &hint));
+      ASSERT_EQ(d2, best) << around << " around, point " << i << " at " << r << " from the axis";
+    }
   }
 }
 
