@@ -24,12 +24,24 @@ namespace {
 
 using namespace vrs_py;
 
+// A boolean array of one entry per vertex or face, as bytes.
+std::vector<uint8_t> read_mask(const AnyArray& a, size_t n, const char* what, const char* per) {
+  if (a.ndim() != 1 || a.shape(0) != n || a.dtype() != nb::dtype<bool>())
+    throw nb::value_error(
+        (std::string(what) + " must be a boolean array of one entry per " + per).c_str());
+  std::vector<uint8_t> out(n);
+  const bool* base = static_cast<const bool*>(a.data());
+  for (size_t i = 0; i < n; ++i)
+    out[i] = base[int64_t(i) * a.stride(0)];
+  return out;
+}
+
 nb::tuple simplify(AnyArray vertices, AnyArray faces, const std::string& target_kind,
                    double target_value, double max_error, const std::string& mode, int threads,
                    bool simplify_boundary, bool keep_boundary, double max_jump,
                    double feature_angle, std::optional<AnyArray> seams,
                    std::optional<AnyArray> locked, nb::object progress,
-                   const std::string& split_vertices) {
+                   const std::string& split_vertices, std::optional<AnyArray> polygon_faces) {
   vrs::Options opt = make_options({target_kind, target_value}, max_error, mode, threads,
                                   simplify_boundary, keep_boundary, max_jump, feature_angle);
   if (split_vertices == "seam")
@@ -51,14 +63,13 @@ nb::tuple simplify(AnyArray vertices, AnyArray faces, const std::string& target_
   }
   std::vector<uint8_t> lock;
   if (locked) {
-    const AnyArray& l = *locked;
-    if (l.ndim() != 1 || l.shape(0) != n || l.dtype() != nb::dtype<bool>())
-      throw nb::value_error("locked must be a boolean array of one entry per vertex");
-    lock.resize(n);
-    const bool* base = static_cast<const bool*>(l.data());
-    for (size_t i = 0; i < n; ++i)
-      lock[i] = base[int64_t(i) * l.stride(0)];
+    lock = read_mask(*locked, n, "locked", "vertex");
     opt.locked = &lock;
+  }
+  std::vector<uint8_t> polygon; // the triangles of polygons the caller puts back whole
+  if (polygon_faces) {
+    polygon = read_mask(*polygon_faces, mesh.face_count(), "polygon_faces", "face");
+    opt.polygon_faces = &polygon;
   }
 
   // Served every few hundred removals on this (the calling) thread: the GIL is taken only
@@ -120,7 +131,8 @@ NB_MODULE(_core, m) {
         nb::arg("target_value"), nb::arg("max_error"), nb::arg("mode"), nb::arg("threads"),
         nb::arg("simplify_boundary"), nb::arg("keep_boundary"), nb::arg("max_jump"),
         nb::arg("feature_angle"), nb::arg("seams").none(), nb::arg("locked").none(),
-        nb::arg("progress").none(), nb::arg("split_vertices") = "seam");
+        nb::arg("progress").none(), nb::arg("split_vertices") = "seam",
+        nb::arg("polygon_faces").none() = nb::none());
   // The MeshLab filter hands pymeshlab its stop reason as a number (strings do not pass).
   m.def("stop_reason_name", [](int code) -> std::string {
     if (code < 0 || code > int(vrs::StopReason::ErrorBound))

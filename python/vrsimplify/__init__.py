@@ -14,7 +14,7 @@ from typing import Callable, Optional, TypedDict, Union
 
 import numpy as np
 
-from . import _core
+from . import _core, polygons
 
 __version__: str = _core.__version__
 __all__ = ["simplify", "Result", "Report", "bounding_box_diagonal", "lods", "Lods", "LodLevel",
@@ -76,11 +76,19 @@ class Result:
     """(k,) int64: the input face an output face is, or -1 for a face the re-triangulation made."""
     corner_source: np.ndarray
     """(k, 3) int64: for each output corner the input corner (3 * face + corner) whose
-    per-corner data (UVs, normals) it takes: the same vertex, on the same side of every seam."""
+    per-corner data (UVs, normals) it takes: the same vertex, on the same side of every seam.
+    With polygon faces: the input face's and corner's indices (a face's corners counted one
+    after the other: m * face + corner for a (p, m) array)."""
     report: Report
     """What the run did: counts, `stop_reason` as text, `target_reached`, `error_bound` (mesh
     units; None unless a bound was tracked), `boundary_simplified`, `relaxed_removals`, `slid`,
     `stop_detail`, warnings in `message` (see the report table in the documentation)."""
+    polygons: Optional[list] = None
+    """With polygon faces given: the output as polygons, each an array of indices into
+    `vertices`: every input polygon the run left untouched whole, every other face a triangle
+    (`faces` holds the same surface as triangles). None for triangles."""
+    polygon_source: Optional[np.ndarray] = None
+    """With polygon faces: for each of `polygons` the input face it is, or -1."""
 
 
 def _array(a, what: str, kinds: str) -> np.ndarray:
@@ -91,12 +99,16 @@ def _array(a, what: str, kinds: str) -> np.ndarray:
     return a
 
 
+def _vertex_array(mesh_vertices) -> np.ndarray:
+    """Vertices as float32/64, copied only when another dtype."""
+    v = _array(mesh_vertices, "vertices", "f")
+    return v if v.dtype in (np.float32, np.float64) else v.astype(np.float64)
+
+
 def _mesh_arrays(mesh_vertices, mesh_faces) -> tuple[np.ndarray, np.ndarray]:
     """Vertices as float32/64 and faces as 32/64-bit integers, copied only when another dtype."""
-    v = _array(mesh_vertices, "vertices", "f")
+    v = _vertex_array(mesh_vertices)
     f = _array(mesh_faces, "faces", "iu")
-    if v.dtype not in (np.float32, np.float64):
-        v = v.astype(np.float64)
     if f.dtype not in (np.int32, np.int64, np.uint32, np.uint64):
         f = f.astype(np.int64)
     return v, f
@@ -142,9 +154,14 @@ def simplify(mesh_vertices, mesh_faces, /, *, ratio: Optional[float] = None,
              feature_angle: float = 0.0, seams=None, locked=None,
              progress: Optional[Callable[[float], Optional[bool]]] = None,
              split_vertices: str = "seam") -> Result:
-    """Simplifies a triangle mesh by removing vertices; the input arrays are left untouched.
+    """Simplifies a triangle or polygon mesh by removing vertices; the input arrays are left
+    untouched.
 
-    mesh_vertices: (n, 3) float32 or float64; mesh_faces: (k, 3) int32 or int64 (any integer).
+    mesh_vertices: (n, 3) float32 or float64; mesh_faces: (k, 3) int32 or int64 (any integer),
+    or polygons: a (k, m) array (quads: m = 4) or a sequence of faces of any lengths, each
+    fanned from its first corner; the polygons the run leaves untouched come back whole in
+    ``Result.polygons``, and ``face_source``/``corner_source`` then name input polygons and
+    their corners.
     Target, at most one: ``ratio`` of the faces kept (default 0.5), ``faces`` or ``vertices``
     (counts). ``max_error``: a guaranteed symmetric Hausdorff bound, in mesh units or as a
     string "E%" of the bounding-box diagonal; alone it simplifies as far as the bound allows,
@@ -168,7 +185,14 @@ def simplify(mesh_vertices, mesh_faces, /, *, ratio: Optional[float] = None,
     progress: called with the fraction done; returning False stops (a valid, partial result).
     Ctrl-C raises KeyboardInterrupt. Bad input or parameters raise ValueError.
     """
-    v, f = _mesh_arrays(mesh_vertices, mesh_faces)
+    poly = polygons.polygon_faces(mesh_faces)
+    fanned = None
+    if poly is not None:
+        v = _vertex_array(mesh_vertices)
+        fanned = polygons.fan(*poly, len(v))
+        f = fanned.triangles
+    else:
+        v, f = _mesh_arrays(mesh_vertices, mesh_faces)
     kind, value = _target(ratio, faces, vertices, max_error)
     if seams is not None:
         seams = _array(seams, "seams", "iu").astype(np.int64, copy=False)
@@ -179,10 +203,18 @@ def simplify(mesh_vertices, mesh_faces, /, *, ratio: Optional[float] = None,
     out_faces, vertex_map, face_source, corner_source, report = _core.simplify(
         v, f, kind, value, _max_error(max_error, v), str(mode), int(threads),
         bool(simplify_boundary), bool(keep_boundary), float(max_jump), float(feature_angle), seams,
-        locked, progress, str(split_vertices))
-    return Result(vertices=v[vertex_map], faces=out_faces.astype(f.dtype, copy=False),
-                  vertex_map=vertex_map, face_source=face_source, corner_source=corner_source,
-                  report=report)
+        locked, progress, str(split_vertices),
+        None if fanned is None else fanned.whole_flags)
+    out_faces = out_faces.astype(f.dtype, copy=False)
+    if fanned is None:
+        return Result(vertices=v[vertex_map], faces=out_faces, vertex_map=vertex_map,
+                      face_source=face_source, corner_source=corner_source, report=report)
+    out_polygons, polygon_source = polygons.regroup(fanned, out_faces, face_source, vertex_map,
+                                                    len(v))
+    face_source, corner_source = polygons.input_sources(fanned, face_source, corner_source)
+    return Result(vertices=v[vertex_map], faces=out_faces, vertex_map=vertex_map,
+                  face_source=face_source, corner_source=corner_source, report=report,
+                  polygons=out_polygons, polygon_source=polygon_source)
 
 
 def bounding_box_diagonal(vertices) -> float:
