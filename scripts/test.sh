@@ -30,11 +30,18 @@ if [ "${1:-}" != "--no-sanitizers" ]; then
   cmake -S "$top" -B "$top/build/tsan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVRS_TSAN=ON \
     -DVRS_BUILD_TESTS=ON -DVRS_BUILD_TOOLS=OFF -DVRS_BUILD_PLUGIN=OFF -DVRS_BUILD_BENCH=OFF >/dev/null
   cmake --build "$top/build/tsan" --target test_threads test_parts test_fan_split test_setup_threads test_bucket_queue -j "$(nproc)"
-  TSAN_OPTIONS=halt_on_error=1 "$top/build/tsan/bin/test_threads" --gtest_filter='Workers.*:Threads.*'
-  TSAN_OPTIONS=halt_on_error=1 "$top/build/tsan/bin/test_parts"
-  TSAN_OPTIONS=halt_on_error=1 "$top/build/tsan/bin/test_fan_split"
-  TSAN_OPTIONS=halt_on_error=1 "$top/build/tsan/bin/test_setup_threads"
-  TSAN_OPTIONS=halt_on_error=1 "$top/build/tsan/bin/test_bucket_queue" --gtest_filter='BucketQueue.Fill*'
+  tsan() { TSAN_OPTIONS=halt_on_error=1 "$top/build/tsan/bin/$1" "${@:2}"; }
+  # In two lanes side by side, the two long ones (5 minutes each) apart; each lane's log whole.
+  (tsan test_threads --gtest_filter='Workers.*:Threads.*' && tsan test_fan_split &&
+    tsan test_bucket_queue --gtest_filter='BucketQueue.Fill*') >"$top/build/tsan/lane1.log" 2>&1 &
+  lane1=$!
+  (tsan test_parts && tsan test_setup_threads) >"$top/build/tsan/lane2.log" 2>&1 &
+  lane2=$!
+  status1=0 status2=0
+  wait $lane1 || status1=$?
+  wait $lane2 || status2=$?
+  cat "$top/build/tsan/lane1.log" "$top/build/tsan/lane2.log"
+  [ $status1 -eq 0 ] && [ $status2 -eq 0 ] || { echo "ThreadSanitizer: a lane failed"; exit 1; }
   echo "== libFuzzer on the core, ${VRS_FUZZ_SECONDS:-120} s"
   VRS_FUZZ_SEED=${VRS_FUZZ_SEED:-1} "$top/scripts/fuzz.sh" "${VRS_FUZZ_SECONDS:-120}"
 fi

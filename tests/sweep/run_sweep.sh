@@ -3,10 +3,13 @@
 # (Debian assimp-testmodels, malformed ones included) at 50 %, 10 % and 1 %, every invariant
 # checked by vrs_sweep. One process per file, so that a reader crashing on a malformed file is
 # told apart from a crash of ours (a crash after LOADED is ours: a failure).
-#   run_sweep.sh VRS_SWEEP CGAL_DATA_DIR OUT_DIR [--ci]
+#   run_sweep.sh VRS_SWEEP CGAL_DATA_DIR OUT_DIR [--ci] [--part K/N]
 # --ci: the CGAL meshes under 400 kB and every assimp model (the full set takes longer).
+# --part K/N: the K-th of N interleaved shares of the files (ctest runs the shares side by side).
 set -u
-sweep=$1 cgal=$2 out=$3 ci=${4:-}
+sweep=$1 cgal=$2 out=$3 ci=${4:-} part=1/1
+[ "${5:-}" = --part ] && part=${6:-1/1}
+share=${part%/*} shares=${part#*/}
 mkdir -p "$out"
 log=$out/sweep.log
 : >"$log"
@@ -20,6 +23,11 @@ while IFS= read -r f; do files+=("$f"); done < <(
   find "$(dirname "$cgal")/points_3" -maxdepth 1 -type f \( -name '*.off' -o -name '*.ply' \) | sort
   find /usr/share/assimp/models -type f | sort)
 [ ${#files[@]} -gt 100 ] || { echo "sweep: only ${#files[@]} files: run scripts/setup.sh"; exit 1; }
+mine=()
+for i in "${!files[@]}"; do
+  [ $((i % shares + 1)) -eq "$share" ] && mine+=("${files[$i]}")
+done
+files=("${mine[@]}")
 
 ours_crashed=0 reader_crashed=0
 for f in "${files[@]}"; do
