@@ -9,9 +9,24 @@
 
 namespace vrs {
 
+namespace {
+constexpr double kFarCorner2 = 1e12; // squared: a corner 1e6 times farther
+} // namespace
+
 double point_triangle_distance2(Vec3 p, Vec3 a, Vec3 b, Vec3 c) {
-  // Voronoi regions of the triangle's vertices, edges and face, in that order.
   auto len2 = [](Vec3 d) { return dot(d, d); };
+  // From a corner a million times farther than another the region tests cancel (a face with
+  // a corner at 1e21 put a point 33 from it at 105 or 1.3e5, the fuzzer's spike): measured
+  // from the nearest corner then. Only then: elsewhere the same arithmetic, the same ties.
+  const double pa = len2(p - a), pb = len2(p - b), pc = len2(p - c);
+  if (pa > kFarCorner2 * std::min(pb, pc)) {
+    const Vec3 t = a;
+    if (pb <= pc)
+      a = b, b = c, c = t;
+    else
+      a = c, c = b, b = t;
+  }
+  // Voronoi regions of the triangle's vertices, edges and face, in that order.
   Vec3 ab = b - a, ac = c - a, ap = p - a;
   double d1 = dot(ab, ap), d2 = dot(ac, ap);
   if (d1 <= 0 && d2 <= 0) return len2(ap);

@@ -81,6 +81,19 @@ TEST(LocalError, PointTriangleDistanceInEachRegion) {
   EXPECT_DOUBLE_EQ(point_triangle_distance({0.5, 1, 0}, a, b, {2, 0, 0}), 1);
 }
 
+TEST(LocalError, PointTriangleDistanceHoldsBesideAFarCornerInEveryCornerOrder) {
+  // The fuzzer's spike: faces from a cube's top edge up to a corner at 1.8e21. A point 33 from
+  // the edge is 33 from each face whichever corner comes first (measured from the far one,
+  // the region tests cancelled: 105 and 1.3e5).
+  const Vec3 p{100.0 / 3, 100.0 / 3, 100}, far{100, 100, 1.84467441e21};
+  const Vec3 faces[2][3] = {{far, {100, 0, 100}, {0, 0, 100}}, {far, {0, 0, 100}, {0, 100, 100}}};
+  for (const auto& f : faces)
+    for (int first = 0; first < 3; ++first)
+      EXPECT_NEAR(point_triangle_distance(p, f[first], f[(first + 1) % 3], f[(first + 2) % 3]),
+                  100.0 / 3, 1e-9)
+          << "first corner " << first;
+}
+
 TEST(LocalError, FlatRingCostsNothingRaisedRingCostsItsHeight) {
   for (float h : {0.0f, 0.25f}) {
     const Mesh m = vrs_test::hexagon_fan(h);
