@@ -514,6 +514,10 @@ int main(int argc, char** argv) {
     seams = vrs_tool::seams(*loaded.doc, welded);
   }
   opt.constrained_edges = &seams;
+  // Polygons are written back whole where the run leaves them (the slide leaves them so).
+  const std::vector<uint8_t> polygon_faces =
+      vrs_tool::polygon_faces(*loaded.doc, mesh.face_count());
+  if (!polygon_faces.empty()) opt.polygon_faces = &polygon_faces;
   const bool terminal = isatty(STDERR_FILENO);
   vrs_tool::ProgressBar bar(progress == 1 || (progress == -1 && terminal), terminal);
   opt.progress = [&bar](float f) { return bar.update(f); };

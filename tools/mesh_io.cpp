@@ -196,8 +196,21 @@ std::vector<uint32_t> seams(const VcgDocument& doc, const vrs::Mesh& core) {
                              [&](uint32_t f, int c) { return core.triangles[3 * f + c]; });
 }
 
+std::vector<uint8_t> polygon_faces(const VcgDocument& doc, size_t face_count) {
+  return doc.polygons.face_flags(face_count);
+}
+
 void apply(VcgDocument& doc, const vrs::Mesh& simplified, const vrs::Report& report) {
   VcgMesh& m = doc.mesh;
+  if (!doc.polygons.empty()) { // the input's faces, on the output's vertices, before they go
+    std::vector<uint32_t> input;
+    input.reserve(3 * m.face.size());
+    for (const Face& f : m.face)
+      if (!f.IsD())
+        for (int c = 0; c < 3; ++c)
+          input.push_back(report.remap[vcg::tri::Index(m, f.cV(c))]);
+    doc.polygons = doc.polygons.surviving(report, input, simplified.triangles);
+  }
   const vrs_vcg::CornerData data = doc.corner_data();
   const bool carry = data.any() && report.corner_source.size() == simplified.triangles.size();
   std::vector<size_t> live; // core face index -> index in m.face
@@ -244,6 +257,7 @@ std::string write_as(VcgDocument& doc, const std::string& path, bool ascii) {
     return err ? vcg::tri::io::ExporterPLY<VcgMesh>::ErrorMsg(err) : "";
   }
   if (ends_with(path, ".obj")) return write_obj(path, doc);
+  if (ends_with(path, ".off")) return write_off(path, doc, mask);
   const int err = vcg::tri::io::Exporter<VcgMesh>::Save(doc.mesh, path.c_str(), mask);
   return err ? vcg::tri::io::Exporter<VcgMesh>::ErrorMsg(err) : "";
 }

@@ -37,6 +37,11 @@ void set_feature_angle(VcgDocument& doc, double degrees);
 // Edges across which that data differs (seams), as core vertex pairs: the core keeps them.
 std::vector<uint32_t> seams(const VcgDocument& doc, const vrs::Mesh& core);
 
+// Per core face, whether it is part of one of the file's polygons (OBJ and OFF faces of more
+// than three corners; Options::polygon_faces), or empty when the file has none: polygons the
+// run leaves whole are written back whole.
+std::vector<uint8_t> polygon_faces(const VcgDocument& doc, size_t face_count);
+
 // Applies the result: drops removed vertices (attributes of the kept ones untouched) and
 // replaces the faces by the simplified ones, each corner with the per-corner data of the input
 // corner the report names (when it has corner sources).

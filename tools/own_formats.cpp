@@ -6,8 +6,10 @@
 //   overflow that AddressSanitizer reports on any header without a NUL);
 // - OFF: a line of blanks among the vertices makes it call strtol on a null pointer (a crash,
 //   CGAL's prim.off), and a huge declared count is allocated before anything is checked.
-// Writer:
-// - OBJ: vcglib writes coordinates with 6 decimals, so kept vertices would not be the input's.
+// Writers:
+// - OBJ: vcglib writes coordinates with 6 decimals, so kept vertices would not be the input's;
+// - OFF: 7 digits, and its polygons name each corner by the vertex's flags, not its index.
+// Both write the document's polygons whole.
 #include <algorithm>
 #include <array>
 #include <cctype>
@@ -195,6 +197,7 @@ std::string read_obj(const std::string& path, VcgDocument& doc) {
           return "face on line " + std::to_string(line_no) + " names a missing vertex";
         poly.push_back(c);
       }
+      if (poly.size() > 3) doc.polygons.add_fan(uint32_t(tris.size() / 3), uint32_t(poly.size()));
       for (size_t j = 1; j + 1 < poly.size(); ++j) {
         face_material.push_back(material);
         for (size_t k : {size_t(0), j, j + 1}) {
@@ -304,8 +307,8 @@ std::string read_off(const std::string& path, VcgDocument& doc) {
     float x, y, z, skip;
     if (!s.xyz(x, y, z)) return "bad vertex " + std::to_string(v);
     pos.emplace_back(x, y, z);
+    // In the order the format gives them: normal, colour, texture coordinates.
     if (normals) s.real(skip) && s.real(skip) && s.real(skip);
-    if (texcoords) s.real(skip) && s.real(skip);
     if (colors) {
       float c[4] = {0, 0, 0, 255};
       int k = 0;
@@ -318,6 +321,7 @@ std::string read_off(const std::string& path, VcgDocument& doc) {
       };
       color.emplace_back(byte(c[0]), byte(c[1]), byte(c[2]), k == 4 ? byte(c[3]) : 255);
     }
+    if (texcoords) s.real(skip) && s.real(skip);
   }
   std::vector<int> poly;
   for (long f = 0; f < nf; ++f, ++line) {
@@ -331,6 +335,7 @@ std::string read_off(const std::string& path, VcgDocument& doc) {
       if (i < 0 || i >= nv) return "face " + std::to_string(f) + " names a missing vertex";
       poly.push_back(int(i));
     }
+    if (poly.size() > 3) doc.polygons.add_fan(uint32_t(tris.size() / 3), uint32_t(poly.size()));
     for (size_t j = 1; j + 1 < poly.size(); ++j)
       tris.insert(tris.end(), {poly[0], poly[j], poly[j + 1]});
   }
@@ -391,22 +396,90 @@ std::string write_obj(const std::string& path, const VcgDocument& doc) {
     uv_of.push_back(uv);
     n_of.push_back(nn);
   }
-  size_t i = 0;
+  // The faces in order, each polygon whole where its first triangle comes (the faces are live:
+  // the i-th face is m.face[i]).
   int material = -1;
-  for (const Face& f : m.face) {
-    if (f.IsD()) continue;
+  auto corner = [&](size_t i, int c) {
+    out << ' ' << index[vcg::tri::Index(m, m.face[i].cV(c))];
+    if (d.texcoord || d.normal) out << '/';
+    if (d.texcoord) out << uv_of[i][size_t(c)];
+    if (d.normal) out << '/' << n_of[i][size_t(c)];
+  };
+  for (size_t i = 0; i < uv_of.size(); ++i) {
+    const Face& f = m.face[i];
+    const uint32_t p = doc.polygons.of(uint32_t(i));
+    if (p != Polygons::kNone && doc.polygons.corners(p)[0] / 3 != i) continue; // written
     const int mat = d.texcoord ? f.cWT(0).N() : 0;
     if (mat != material && mat >= 0 && size_t(mat) < doc.materials.size())
       out << "usemtl " << doc.materials[size_t(material = mat)] << '\n';
     out << 'f';
-    for (int c = 0; c < 3; ++c) {
-      out << ' ' << index[vcg::tri::Index(m, f.cV(c))];
-      if (d.texcoord || d.normal) out << '/';
-      if (d.texcoord) out << uv_of[i][c];
-      if (d.normal) out << '/' << n_of[i][c];
+    if (p == Polygons::kNone) {
+      for (int c = 0; c < 3; ++c)
+        corner(i, c);
+    } else {
+      for (uint32_t k = 0; k < doc.polygons.corner_count(p); ++k)
+        corner(doc.polygons.corners(p)[k] / 3, int(doc.polygons.corners(p)[k] % 3));
     }
     out << '\n';
-    ++i;
+  }
+  return out ? std::string() : "write failed";
+}
+
+std::string write_off(const std::string& path, const VcgDocument& doc, int mask) {
+  using vcg::tri::io::Mask;
+  std::ofstream out(path);
+  if (!out) return "cannot open for writing";
+  const VcgMesh& m = doc.mesh;
+  const bool normals = mask & Mask::IOM_VERTNORMAL, colors = mask & Mask::IOM_VERTCOLOR,
+             uvs = mask & Mask::IOM_VERTTEXCOORD,
+             face_colors = (mask & Mask::IOM_FACECOLOR) && m.face.IsColorEnabled();
+  size_t faces = 0;
+  for (size_t i = 0; i < m.face.size(); ++i) {
+    const uint32_t p = doc.polygons.of(uint32_t(i));
+    faces += !m.face[i].IsD() && (p == Polygons::kNone || doc.polygons.corners(p)[0] / 3 == i);
+  }
+  size_t vertices = 0;
+  std::vector<size_t> index(m.vert.size());
+  for (size_t v = 0; v < m.vert.size(); ++v)
+    if (!m.vert[v].IsD()) index[v] = vertices++;
+  // The keyword, then the counts on a line of their own (ExactVertices reads them there).
+  out << (uvs ? "ST" : "") << (colors ? "C" : "") << (normals ? "N" : "") << "OFF\n"
+      << vertices << ' ' << faces << " 0\n";
+  char buf[256];
+  for (const Vertex& v : m.vert) {
+    if (v.IsD()) continue;
+    const auto& p = v.cP();
+    int n = std::snprintf(buf, sizeof buf, "%.9g %.9g %.9g", p[0], p[1], p[2]);
+    if (normals)
+      n += std::snprintf(buf + n, sizeof buf - size_t(n), " %.9g %.9g %.9g", v.cN()[0], v.cN()[1],
+                         v.cN()[2]);
+    if (colors)
+      n += std::snprintf(buf + n, sizeof buf - size_t(n), " %d %d %d %d", v.cC()[0], v.cC()[1],
+                         v.cC()[2], v.cC()[3]);
+    if (uvs)
+      n += std::snprintf(buf + n, sizeof buf - size_t(n), " %.9g %.9g", v.cT().U(), v.cT().V());
+    out.write(buf, n);
+    out << '\n';
+  }
+  for (size_t i = 0; i < m.face.size(); ++i) {
+    const Face& f = m.face[i];
+    if (f.IsD()) continue;
+    const uint32_t p = doc.polygons.of(uint32_t(i));
+    if (p == Polygons::kNone) {
+      out << 3;
+      for (int c = 0; c < 3; ++c)
+        out << ' ' << index[vcg::tri::Index(m, f.cV(c))];
+    } else if (doc.polygons.corners(p)[0] / 3 == i) {
+      out << doc.polygons.corner_count(p);
+      for (uint32_t k = 0; k < doc.polygons.corner_count(p); ++k) {
+        const uint32_t x = doc.polygons.corners(p)[k];
+        out << ' ' << index[vcg::tri::Index(m, m.face[x / 3].cV(int(x % 3)))];
+      }
+    } else {
+      continue; // written with its polygon
+    }
+    if (face_colors) out << ' ' << int(f.cC()[0]) << ' ' << int(f.cC()[1]) << ' ' << int(f.cC()[2]);
+    out << '\n';
   }
   return out ? std::string() : "write failed";
 }

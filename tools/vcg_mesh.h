@@ -7,6 +7,7 @@
 
 #include <vcg/complex/complex.h>
 
+#include "polygons.h"
 #include "vcg_corner_data.h"
 
 namespace vrs_tool {
@@ -34,6 +35,8 @@ class VcgDocument {
   std::vector<std::string> materials;
   // --feature-angle: also the angle past which per-corner normals make a hard edge.
   double feature_angle_deg = 0;
+  // The file's polygons, fanned into its faces; after apply(), those the run left whole.
+  Polygons polygons;
 
   // Enables the optional components `mask` asks for (before faces are read into them).
   void enable(int mask_bits);
@@ -47,5 +50,7 @@ std::string read_obj(const std::string& path, VcgDocument& doc);
 std::string read_stl(const std::string& path, VcgDocument& doc);
 std::string read_off(const std::string& path, VcgDocument& doc);
 std::string write_obj(const std::string& path, const VcgDocument& doc);
+// OFF with round-trip coordinates (vcglib prints 7 digits) and the document's polygons whole.
+std::string write_off(const std::string& path, const VcgDocument& doc, int mask);
 
 } // namespace vrs_tool

@@ -109,3 +109,30 @@ def test_bad_polygons_raise_naming_the_face(polys, message):
     v, _ = quad_grid(2)
     with pytest.raises(ValueError, match=message):
         vrsimplify.simplify(v, polys, ratio=0.5)
+
+
+def test_command_line_keeps_the_polygons_the_numpy_api_keeps(tmp_path):
+    """One behaviour: the console script on an OFF of quads, pentagons and hexagons writes back
+    whole exactly the polygons Result.polygons keeps for the same run, in the same order of
+    corners (the OFF is written with round-trip coordinates: vertices compare by position)."""
+    import shutil
+    import subprocess
+    v, q = quad_grid(24)
+    v = v.astype(np.float32).astype(np.float64)  # what 9 digits of text hold exactly
+    # Quads; two of them merged into a hexagon, one split into two triangles.
+    polys = [[q[5][0], q[5][1], q[6][1], q[6][2], q[5][2], q[5][3]],
+             [q[7][0], q[7][1], q[7][2]], [q[7][0], q[7][2], q[7][3]]]
+    polys += [list(p) for i, p in enumerate(q) if i not in (5, 6, 7)]
+    src = tmp_path / "polys.off"
+    src.write_text(f"OFF\n{len(v)} {len(polys)} 0\n" + "".join("%.9g %.9g %.9g\n" % tuple(x) for x in v)
+                   + "".join("%d %s\n" % (len(p), " ".join(map(str, p))) for p in polys))
+    r = vrsimplify.simplify(v, polys, ratio=0.5, threads=1)
+    out = tmp_path / "out.off"
+    subprocess.run([shutil.which("vrsimplify"), str(src), str(out), "--ratio", "0.5", "--threads", "1",
+                    "--quiet"], check=True)
+    lines = [line.split() for line in out.read_text().splitlines() if line.strip()]
+    nv, nf = int(lines[1][0]), int(lines[1][1])
+    pos = [tuple(np.float32(x) for x in w[:3]) for w in lines[2:2 + nv]]
+    cli = sorted(tuple(pos[int(i)] for i in w[1:]) for w in lines[2 + nv:2 + nv + nf] if int(w[0]) > 3)
+    api = sorted(tuple(tuple(np.float32(x) for x in r.vertices[i]) for i in p) for p in r.polygons if len(p) > 3)
+    assert len(api) > 20 and cli == api

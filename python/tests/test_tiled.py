@@ -298,3 +298,19 @@ def test_tiled_runs_keep_every_attribute_locally_and_on_dask(tmp_path):
     assert len(out_corners) == 3 * r["output_faces"]
     assert [c for c in out_corners if c not in corners] == []
     assert "mtllib in/scan.mtl" in local.read_text()  # named from the output's folder
+
+
+def test_polygons_are_written_as_triangles_and_the_run_says_so(tmp_path):
+    """A tiled run writes a quad mesh's faces as triangles and warns (in core the untouched
+    quads stay whole: test_polygons)."""
+    n = 90
+    x, y = np.meshgrid(np.arange(n + 1.0), np.arange(n + 1.0))
+    v = np.stack([x.ravel(), y.ravel(), 2 * np.sin(x / 5).ravel() * np.cos(y / 7).ravel()], axis=1)
+    i = (np.arange(n)[None, :] + (n + 1) * np.arange(n)[:, None]).ravel()
+    src, dst = tmp_path / "quads.obj", tmp_path / "out.obj"
+    src.write_text("".join("v %.9g %.9g %.9g\n" % tuple(p) for p in v) +
+                   "".join("f %d %d %d %d\n" % (a + 1, a + 2, a + n + 3, a + n + 2) for a in i))
+    with pytest.warns(UserWarning, match="polygons are written as triangles by a tiled run"):
+        r = vrsimplify.tiled.simplify(src, dst, ratio=0.5, memory="1M")
+    assert r["levels"] and r["levels"][0]["polygons"]
+    assert all(len(line.split()) == 4 for line in dst.read_text().splitlines() if line.startswith("f "))

@@ -118,6 +118,7 @@ Level level_of(const State& s) {
   l.target = uint64_t(state_number(s, "target"));
   l.ratio = s.count("done") ? state_number(s, "ratio") : keep_of(s);
   l.serial = !s.count("done") && s.count("serial") && s.at("serial") == "1";
+  l.polygons = s.count("polygons") && s.at("polygons") == "1";
   return l;
 }
 
@@ -143,7 +144,7 @@ Level begin(const std::string& input, const Settings& settings) {
   // value: flat_by_value below): flat shading, which holds nothing the geometry does not (as
   // in core: no seams, the output faces their own).
   const bool obj = format_of(input) == "obj";
-  bool normal_keys = false, flat = true, other_keys = false;
+  bool normal_keys = false, flat = true, other_keys = false, polygons = false;
   int64_t max_index = -1, min_index = 0;
   std::vector<std::string> materials;
   std::unique_ptr<RecordWriter> kout;
@@ -191,6 +192,7 @@ Level begin(const std::string& input, const Settings& settings) {
                                ": run it in core (without a memory budget)");
     };
     sink.material = [&](uint32_t, const std::string& name) { materials.push_back(name); };
+    sink.polygon = [&] { polygons = true; };
     sink.layout = [&](const Layout& l) {
       for (const std::string& p : l.vertex_properties) {
         const size_t end = p.find_last_not_of(" \t\r");
@@ -270,6 +272,7 @@ Level begin(const std::string& input, const Settings& settings) {
   // as those of a mesh without any).
   const bool keyed = kout && corner_data;
   s["keys"] = keyed ? "1" : "0";
+  s["polygons"] = polygons ? "1" : "0";
   const std::string& split = settings.split_vertices;
   if (!split.empty() && split != "seam" && split != "weld" && split != "keep")
     throw std::runtime_error("split_vertices must be seam, weld or keep, got " + split);
