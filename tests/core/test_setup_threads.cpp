@@ -59,7 +59,7 @@ TEST(SetupThreads, TopologyListsAreTheSameOnAnyNumberOfThreads) {
   const Mesh m = shuffled_with_a_hub();
   Topology one;
   one.build(m.triangles, m.vertex_count());
-  for (int threads : {2, 3, 8}) {
+  for (int threads : vrs_test::compared_thread_counts()) {
     Workers workers(threads);
     Topology many;
     many.build(m.triangles, m.vertex_count(), &workers);
@@ -112,7 +112,7 @@ TEST(SetupThreads, WeldingIsTheSameOnAnyNumberOfThreads) {
   Mesh one = in;
   const Welding w1 = weld_split_vertices(one.triangles, one.positions);
   EXPECT_EQ(w1.welded, in.vertex_count() - vrs_test::icosphere(4).vertex_count());
-  for (int threads : {2, 3, 8}) {
+  for (int threads : vrs_test::compared_thread_counts()) {
     Workers workers(threads);
     Mesh many = in;
     const Welding w = weld_split_vertices(many.triangles, many.positions, &workers);

@@ -77,7 +77,7 @@ TEST(Threads, SameOutputAndReportWhateverTheThreadCount) {
       ASSERT_TRUE(one.report.ok) << one.report.message;
       ASSERT_EQ(vrs_test::check_run(c.mesh, one.mesh, o, one.report), "") << c.name;
       EXPECT_LT(one.mesh.face_count(), c.mesh.face_count()) << c.name;
-      for (int threads : {2, 3, 8})
+      for (int threads : vrs_test::compared_thread_counts())
         expect_same(one, run(c.mesh, o, threads),
                     c.name + " variant " + std::to_string(variant) + ", " +
                         std::to_string(threads) + " threads against 1");

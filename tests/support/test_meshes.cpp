@@ -2,6 +2,7 @@
 
 #include <array>
 #include <cmath>
+#include <cstdlib>
 #include <fstream>
 #include <map>
 #include <sstream>
@@ -134,6 +135,20 @@ std::vector<NamedMesh> comparison_meshes() {
     if (!path.empty()) meshes.push_back({name, read_off(path)});
   }
   return meshes;
+}
+
+std::vector<int> compared_thread_counts() {
+  const char* listed = std::getenv("VRS_TEST_THREAD_COUNTS");
+  if (!listed || !*listed) return {2, 3, 8};
+  std::vector<int> counts;
+  for (const char* p = listed; *p;) {
+    char* end = nullptr;
+    const long n = std::strtol(p, &end, 10);
+    if (end == p) break;
+    if (n > 1) counts.push_back(int(n));
+    p = *end == ',' ? end + 1 : end;
+  }
+  return counts.empty() ? std::vector<int>{2, 3, 8} : counts;
 }
 
 vrs::Mesh icosphere(int level) {

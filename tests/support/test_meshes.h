@@ -34,6 +34,10 @@ struct NamedMesh {
   vrs::Mesh mesh;
 };
 std::vector<NamedMesh> comparison_meshes();
+// The thread counts those tests compare one thread against: 2, 3 and 8, or the ones the
+// environment's VRS_TEST_THREAD_COUNTS lists ("2,8" in the ThreadSanitizer lanes, where a run
+// takes 20 times as long: races need threads, not every count).
+std::vector<int> compared_thread_counts();
 // A closed plate of nx x ny unit cells, `thickness` thick, with a square through-hole at each
 // cell (x, y) listed in `holes` (pairs): genus = the number of holes. Each cell is two
 // triangles on each side; the walls are split `wall_rows` times along the thickness (a CAD

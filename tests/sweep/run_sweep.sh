@@ -6,6 +6,7 @@
 #   run_sweep.sh VRS_SWEEP CGAL_DATA_DIR OUT_DIR [--ci] [--part K/N]
 # --ci: the CGAL meshes under 400 kB and every assimp model (the full set takes longer).
 # --part K/N: the K-th of N interleaved shares of the files (ctest runs the shares side by side).
+# VRS_SWEEP_FLAGS: more flags for vrs_sweep (the sanitizer build passes --no-rerun).
 set -u
 sweep=$1 cgal=$2 out=$3 ci=${4:-} part=1/1
 [ "${5:-}" = --part ] && part=${6:-1/1}
@@ -31,7 +32,8 @@ files=("${mine[@]}")
 
 ours_crashed=0 reader_crashed=0
 for f in "${files[@]}"; do
-  timeout 600 "$sweep" "$f" >"$out/one.log" 2>&1
+  # shellcheck disable=SC2086 # flags, split
+  timeout 600 "$sweep" ${VRS_SWEEP_FLAGS:-} "$f" >"$out/one.log" 2>&1
   code=$?
   cat "$out/one.log" >>"$log"
   if [ $code -gt 1 ]; then
