@@ -128,6 +128,8 @@ bool run_method(const std::string& method, const vrs::Mesh& in, size_t target,
         o.part_vertices = 0;
       else if (p.rfind("part", 0) == 0 && p.size() > 4) // e.g. ours-part1024
         o.part_vertices = std::atoi(p.c_str() + 4);
+      else if (p.rfind("jump", 0) == 0 && p.size() > 4) // e.g. ours-jump0: the target at any cost
+        o.max_price_jump = std::atof(p.c_str() + 4);
       else if (p.rfind("int", 0) == 0 && p.size() > 3)
         o.intervals = std::atoi(p.c_str() + 3);
       else

@@ -44,6 +44,8 @@ steps = [  # (label, name prefix): the driver's steps, then the planning's piece
     ("faces rewritten (`rewrite`)", "vrs::Simplifier::rewrite"),
     ("accounting (`account`, serial)", "vrs::Simplifier::account"),
     ("neighbours priced again (`reprice`)", "vrs::Simplifier::reprice"),
+    ("the slide after the run (`slide`)", "vrs::Simplifier::slide"),
+    ("its fans' choices (`slide_choice`)", "vrs::Simplifier::slide_choice"),
     ("a plan (`Planner::plan`)", "vrs::Planner::plan"),
     ("its exact price (`patch_error`)", "vrs::patch_error"),
     ("its plane (`Evaluator::evaluate`)", "vrs::Evaluator::evaluate"),
