@@ -104,9 +104,6 @@ int run_in(const std::string& dir, const TiledRequest& r, int workers) {
   try {
     vrs::tiled::Level level = vrs::tiled::begin(r.input, s);
     lap("read and cut into tiles");
-    if (level.polygons)
-      std::fprintf(stderr, "vrsimplify: note: the input's polygons are written as triangles by a "
-                           "tiled run (in core, those the run leaves untouched stay whole)\n");
     input_faces = level.faces;
     while (level.tiles > 0) {
       vrs::tiled::run_level_locally(dir, level, workers, r.progress);

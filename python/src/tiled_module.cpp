@@ -21,7 +21,6 @@ nb::dict level_dict(const vrs::tiled::Level& l) {
   d["target"] = l.target;
   d["ratio"] = l.ratio;
   d["serial"] = l.serial;
-  d["polygons"] = l.polygons;
   return d;
 }
 

@@ -300,17 +300,30 @@ def test_tiled_runs_keep_every_attribute_locally_and_on_dask(tmp_path):
     assert "mtllib in/scan.mtl" in local.read_text()  # named from the output's folder
 
 
-def test_polygons_are_written_as_triangles_and_the_run_says_so(tmp_path):
-    """A tiled run writes a quad mesh's faces as triangles and warns (in core the untouched
-    quads stay whole: test_polygons)."""
+def test_untouched_quads_come_back_whole_as_in_core(tmp_path):
+    """A tiled run of a quad mesh writes the quads it left untouched whole, each one an input
+    quad, corners in order (in core the same rule: test_polygons)."""
     n = 90
     x, y = np.meshgrid(np.arange(n + 1.0), np.arange(n + 1.0))
     v = np.stack([x.ravel(), y.ravel(), 2 * np.sin(x / 5).ravel() * np.cos(y / 7).ravel()], axis=1)
     i = (np.arange(n)[None, :] + (n + 1) * np.arange(n)[:, None]).ravel()
+    quads = [(a, a + 1, a + n + 2, a + n + 1) for a in i]
     src, dst = tmp_path / "quads.obj", tmp_path / "out.obj"
     src.write_text("".join("v %.9g %.9g %.9g\n" % tuple(p) for p in v) +
-                   "".join("f %d %d %d %d\n" % (a + 1, a + 2, a + n + 3, a + n + 2) for a in i))
-    with pytest.warns(UserWarning, match="polygons are written as triangles by a tiled run"):
-        r = vrsimplify.tiled.simplify(src, dst, ratio=0.5, memory="1M")
-    assert r["levels"] and r["levels"][0]["polygons"]
-    assert all(len(line.split()) == 4 for line in dst.read_text().splitlines() if line.startswith("f "))
+                   "".join("f %d %d %d %d\n" % tuple(c + 1 for c in q) for q in quads))
+    r = vrsimplify.tiled.simplify(src, dst, ratio=0.5, memory="1M")
+    assert len(r["levels"]) > 1 and r["target_reached"]
+    lines = [line.split() for line in dst.read_text().splitlines() if line.startswith("v ")]
+    out_v = [tuple(float(c) for c in w[1:4]) for w in lines]
+    faces = [[int(c) - 1 for c in line.split()[1:]] for line in dst.read_text().splitlines()
+             if line.startswith("f ")]
+    assert sum(len(f) - 2 for f in faces) == r["output_faces"]
+    written = [tuple(float(c) for c in line.split()[1:4])
+               for line in src.read_text().splitlines() if line.startswith("v ")]
+    key = {p: k for k, p in enumerate(written)}  # the output copies the input's v lines
+    def cyc(f):
+        k = f.index(min(f))
+        return tuple(f[k:] + f[:k])
+    inputs = {cyc(list(q)) for q in quads}
+    kept = [cyc([key[out_v[c]] for c in f]) for f in faces if len(f) == 4]
+    assert len(kept) > 100 and all(q in inputs for q in kept)

@@ -24,7 +24,6 @@ import math
 import os
 import sys
 import time
-import warnings
 from typing import Optional, Union
 
 from . import _core, _remote_tiles
@@ -91,9 +90,6 @@ def simplify(src: Union[str, os.PathLike], dst: Union[str, os.PathLike], *, rati
         level = _core.tiled_begin(src, local, float(ratio), _core.tiled_faces_for_memory(budget),
                                   split_vertices or "")
         input_faces = level["faces"]
-        if level.get("polygons"):
-            warnings.warn("the input's polygons are written as triangles by a tiled run (in core, "
-                          "those the run leaves untouched stay whole)", stacklevel=2)
         while level["tiles"]:
             t, n, k = time.perf_counter(), level["tiles"], level["level"]
             if client is None:

@@ -6,7 +6,7 @@ filter, pymeshlab and the numpy API keep them:
   same cyclic order (positions and, in OBJ, texture coordinates), never a merge of pieces;
 - the faces' triangles add up to the face count the run reports;
 - at --ratio 1 every polygon comes back whole; at 0.5 some do, and the OBJ and OFF runs keep
-  the same ones.
+  the same ones; tiled runs (--memory) keep them by the same rule.
 
     test_polygons.py VRSIMPLIFY SUPPORT_DIR OUT_DIR
 """
@@ -74,7 +74,8 @@ def canonical(face):
 
 
 def run(src, dst, *args):
-    p = subprocess.run([vrs, str(src), str(dst), "--json", "--threads", "1", *args],
+    threads = [] if "--memory" in args else ["--threads", "1"]  # tiles run on one thread each
+    p = subprocess.run([vrs, str(src), str(dst), "--json", *threads, *args],
                        capture_output=True, text=True)
     check(p.returncode == 0, f"{src.name} -> {dst.name} {' '.join(args)} runs ({p.stderr.strip()[:200]})")
     return json.loads(p.stdout) if p.returncode == 0 else {}
@@ -104,6 +105,30 @@ for ext in ("obj", "off"):
     check(len(big) > 20 and any(len(f) == 5 for f in big), f"{ext}: polygons left untouched stay whole")
     kept[ext] = sorted(tuple(c[0] for c in f) for f in big)
 check(kept["obj"] == kept["off"], "OBJ and OFF keep the same polygons")
+
+# Tiled runs (--memory): the same rule, by input vertex id across tiles and levels. A larger
+# sheet (28 800 triangles), so that a small budget cuts it into tiles.
+positions, polys = polygon_sheet.sheet(120)
+for ext in ("obj", "off"):
+    src = out / f"big.{ext}"
+    with open(src, "w") as f:
+        if ext == "obj":
+            for x, y, z in positions:
+                f.write("v %.6f %.6f %.6f\nvt %.6f %.6f\n" % (x, y, z, x, y))
+            for p in polys:
+                f.write("f %s\n" % " ".join("%d/%d" % (v + 1, v + 1) for v in p))
+        else:
+            f.write("OFF\n%d %d 0\n" % (len(positions), len(polys)))
+            f.writelines("%.6f %.6f %.6f\n" % q for q in positions)
+            f.writelines("%d %s\n" % (len(p), " ".join(map(str, p))) for p in polys)
+    polygons = {canonical(f) for f in read(src) if len(f) > 3}
+    report = run(src, out / f"big-tiled.{ext}", "--ratio", "0.5", "--memory", "1M")
+    faces = read(out / f"big-tiled.{ext}") if (out / f"big-tiled.{ext}").exists() else []
+    big = [canonical(f) for f in faces if len(f) > 3]
+    check(report.get("tiled") and sum(len(f) - 2 for f in faces) == report.get("output_faces"),
+          f"{ext}, tiled: the {len(faces)} faces hold the {report.get('output_faces')} triangles reported")
+    check(len(big) > 100 and all(f in polygons for f in big) and any(len(f) == 6 for f in big),
+          f"{ext}, tiled: {len(big)} polygons whole, every one an input polygon, corners in order")
 
 # Turned: a sheet written with every face reversed keeps its polygons reversed, whole.
 flipped = out / "flipped.off"

@@ -179,7 +179,6 @@ void pack(Type t, double v, unsigned char* out, size_t at) {
 }
 
 std::string read_ply(std::FILE* in, const StreamSink& sink) {
-  bool told_polygon = false;
   std::string line;
   if (!read_line(in, line) || line != "ply") return "not a PLY file";
   Encoding enc = Encoding::Ascii;
@@ -333,7 +332,7 @@ std::string read_ply(std::FILE* in, const StreamSink& sink) {
           uncarried = "face " + std::to_string(k) + "'s texcoord list (not two per corner)";
           sink.uncarried(uncarried);
         }
-        if (poly.size() > 3 && !told_polygon && sink.polygon) told_polygon = true, sink.polygon();
+        if (poly.size() > 3 && sink.polygon) sink.polygon(poly.size());
         for (size_t j = 2; j < poly.size(); ++j) {
           const int64_t t[3] = {poly[0], poly[j - 1], poly[j]};
           const size_t corner[3] = {0, j - 1, j};
@@ -365,7 +364,6 @@ bool obj_index(const char*& c, uint64_t count, int64_t& out) {
 }
 
 std::string read_obj(std::FILE* in, const StreamSink& sink) {
-  bool told_polygon = false;
   if (sink.layout) {
     Layout layout;
     layout.format = Layout::Format::Obj;
@@ -418,7 +416,7 @@ std::string read_obj(std::FILE* in, const StreamSink& sink) {
       if (poly.size() < 3) return bad(": face with fewer than 3 corners");
       CornerKeys keys;
       keys.group = group;
-      if (poly.size() > 3 && !told_polygon && sink.polygon) told_polygon = true, sink.polygon();
+      if (poly.size() > 3 && sink.polygon) sink.polygon(poly.size());
       for (size_t j = 2; j < poly.size(); ++j) {
         const int64_t t[3] = {poly[0], poly[j - 1], poly[j]};
         const size_t corner[3] = {0, j - 1, j};
@@ -450,7 +448,6 @@ std::string read_obj(std::FILE* in, const StreamSink& sink) {
 // ---- OFF (ascii) -------------------------------------------------------------------------
 
 std::string read_off(std::FILE* in, const StreamSink& sink) {
-  bool told_polygon = false;
   PlyReader r{in, Encoding::Ascii, "", 0, false}; // its ascii tokenizer, comments dropped below
   std::string tok;
   auto number = [&](double& v) {
@@ -513,7 +510,7 @@ std::string read_off(std::FILE* in, const StreamSink& sink) {
       told = true;
       sink.uncarried("OFF face colors");
     }
-    if (poly.size() > 3 && !told_polygon && sink.polygon) told_polygon = true, sink.polygon();
+    if (poly.size() > 3 && sink.polygon) sink.polygon(poly.size());
     for (size_t j = 2; j < poly.size(); ++j) {
       const int64_t t[3] = {poly[0], poly[j - 1], poly[j]};
       sink.triangle(t, CornerKeys{});

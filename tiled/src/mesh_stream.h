@@ -57,9 +57,9 @@ struct StreamSink {
   // Optional: something the file holds that CornerKeys cannot carry (a PLY face property of
   // more than 4 bytes, an extra element, OFF face colors), once, when first seen.
   std::function<void(const std::string& what)> uncarried;
-  // Optional: once, at the first face of more than three corners (each face is fanned from
-  // its first corner into triangles).
-  std::function<void()> polygon;
+  // Optional: before the triangles of each face of more than three corners, its corner count
+  // (the face is fanned from its first corner: corners - 2 triangles follow).
+  std::function<void(size_t corners)> polygon;
   // Stop once the vertices are read (a PLY's or OFF's vertices come first; OBJ reads on).
   bool vertices_only = false;
 };

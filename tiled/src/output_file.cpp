@@ -123,7 +123,8 @@ std::string format_of(const std::string& path) {
 
 uint64_t write_output(const std::string& input, const std::string& output, uint64_t vertices,
                       uint64_t texcoords, uint64_t normals, bool flat_normals,
-                      const std::vector<std::string>& materials, const FaceSource& faces) {
+                      const std::vector<std::string>& materials, const FaceSource& faces,
+                      const OutputPolygons* polygons) {
   const std::string format = format_of(input);
   if (format.empty() || format != format_of(output))
     throw std::runtime_error("a tiled run writes the input's format (" + format +
@@ -180,8 +181,9 @@ uint64_t write_output(const std::string& input, const std::string& output, uint6
       }
       out.text(h + "end_header\n");
     } else if (l.format == Layout::Format::Off) {
+      const uint64_t written = face_count - (polygons ? polygons->merged() : 0);
       out.text(l.off_keyword + "\n" + std::to_string(used_vertices) + " " +
-               std::to_string(face_count) + " 0\n");
+               std::to_string(written) + " 0\n");
     } else {
       out.text("# vrsimplify, tiled\n");
     }
@@ -227,7 +229,23 @@ uint64_t write_output(const std::string& input, const std::string& output, uint6
   uint32_t group = 0;
   uint64_t face_normals = 0;
   char line[256];
+  // Polygons (OBJ, OFF): one face where their first triangle comes, none for the others.
+  std::vector<uint8_t> done(polygons ? polygons->count() : 0, 0);
   faces([&](const FaceRecord& r) {
+    const uint32_t polygon = polygons ? polygons->of(r) : OutputPolygons::kNone;
+    if (polygon != OutputPolygons::kNone) {
+      if (done[polygon]) return;
+      done[polygon] = 1;
+    }
+    // The face's corners: the triangle's, or its polygon's (vertex, vt key, vn key).
+    const uint32_t corners = polygon == OutputPolygons::kNone ? 3 : polygons->corner_count(polygon);
+    auto corner = [&](uint32_t k, uint32_t& v, uint32_t& a, uint32_t& b) {
+      if (polygon == OutputPolygons::kNone)
+        v = r.v[k], a = r.a[k], b = r.b[k];
+      else
+        v = polygons->vertex(polygon, k), a = polygons->key_a(polygon, k),
+        b = polygons->key_b(polygon, k);
+    };
     if (layout.format == Layout::Format::Obj) {
       if (r.group != group && r.group <= materials.size()) {
         group = r.group;
@@ -249,26 +267,37 @@ uint64_t write_output(const std::string& input, const std::string& output, uint6
         ++face_normals;
       }
       std::string f = "f";
-      for (int c = 0; c < 3; ++c) {
-        int len = std::snprintf(line, sizeof line, " %u", index[r.v[c]]);
-        const bool has_vt = r.a[c] && r.a[c] <= vt.size();
-        if (has_vt)
-          len += std::snprintf(line + len, sizeof line - size_t(len), "/%u", vt[r.a[c] - 1]);
+      for (uint32_t c = 0; c < corners; ++c) {
+        uint32_t v, a, b;
+        corner(c, v, a, b);
+        int len = std::snprintf(line, sizeof line, " %u", index[v]);
+        const bool has_vt = a && a <= vt.size();
+        if (has_vt) len += std::snprintf(line + len, sizeof line - size_t(len), "/%u", vt[a - 1]);
         if (flat_normals)
           len += std::snprintf(line + len, sizeof line - size_t(len), "%s/%llu", has_vt ? "" : "/",
                                (unsigned long long)face_normals);
-        else if (r.b[c] && r.b[c] <= vn.size())
+        else if (b && b <= vn.size())
           len += std::snprintf(line + len, sizeof line - size_t(len), "%s/%u", has_vt ? "" : "/",
-                               vn[r.b[c] - 1]);
+                               vn[b - 1]);
         f.append(line, size_t(len));
       }
       out.text(f + "\n");
       return;
     }
-    if (layout.format == Layout::Format::Off) {
+    if (layout.format == Layout::Format::Off && polygon == OutputPolygons::kNone) {
       const int len = std::snprintf(line, sizeof line, "3 %u %u %u\n", index[r.v[0]] - 1,
                                     index[r.v[1]] - 1, index[r.v[2]] - 1);
       out.text(line, size_t(len));
+      return;
+    }
+    if (layout.format == Layout::Format::Off) {
+      std::string f = std::to_string(corners);
+      for (uint32_t c = 0; c < corners; ++c) {
+        uint32_t v, a, b;
+        corner(c, v, a, b);
+        f += " " + std::to_string(index[v] - 1);
+      }
+      out.text(f + "\n");
       return;
     }
     unsigned char group_bytes[4];

@@ -9,6 +9,7 @@
 #include <string>
 #include <vector>
 
+#include "output_polygons.h"
 #include "partition.h"
 
 namespace vrs::tiled {
@@ -16,11 +17,14 @@ namespace vrs::tiled {
 // "ply", "obj", "off" by the extension (any case), else "".
 std::string format_of(const std::string& path);
 
-// Writes `output` atomically; returns its face count. `materials`: an OBJ's names by group - 1.
-// `flat_normals` (OBJ): the input's vn lines are one a face (flat shading); each output face is
-// given its own unit normal instead, as the in-core run gives it.
+// Writes `output` atomically; returns its face count (triangles). `materials`: an OBJ's names
+// by group - 1. `flat_normals` (OBJ): the input's vn lines are one a face (flat shading); each
+// output face is given its own unit normal instead, as the in-core run gives it. `polygons`
+// (OBJ, OFF; may be null): the input's polygons the output holds whole, each written as one
+// face where its first triangle comes.
 uint64_t write_output(const std::string& input, const std::string& output, uint64_t vertices,
                       uint64_t texcoords, uint64_t normals, bool flat_normals,
-                      const std::vector<std::string>& materials, const FaceSource& faces);
+                      const std::vector<std::string>& materials, const FaceSource& faces,
+                      const OutputPolygons* polygons = nullptr);
 
 } // namespace vrs::tiled

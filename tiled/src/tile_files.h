@@ -4,6 +4,8 @@
 //   vertices.bin        the input's positions, float xyz, in input order (for the tiles)
 //   faces.bin           the input's triangles, uint32 x3 (level 1 reads it)
 //   keys.bin            their CornerKeys, when the input has per-corner data
+//   polygons.bin        an OBJ's or OFF's faces of more than three corners (PolygonRecord);
+//                       faces.bin is then kept to the end, for the output to find them whole
 //   materials           an OBJ's material names, one a line, by group number
 //   state               the run's settings and where it stands (key value lines)
 //   L<level>/<tile>.in  one tile's faces as records (below), shared vertices marked
@@ -25,8 +27,9 @@ namespace vrs::tiled {
 struct FaceRecord {
   uint32_t v[3];
   float p[3][3];
-  uint8_t shared; // bit c: corner c's vertex is also in another tile (a border)
-  uint8_t pad[3];
+  uint8_t shared;  // bit c: corner c's vertex is also in another tile (a border)
+  uint8_t polygon; // 1: an untouched triangle of one of the input's polygons (polygons.bin)
+  uint8_t pad[2];
   uint32_t a[3], b[3], group;
 };
 static_assert(sizeof(FaceRecord) == 80, "records are written as they are");
@@ -34,6 +37,13 @@ constexpr size_t kShortRecord = 52;
 inline size_t record_size(bool keys) {
   return keys ? sizeof(FaceRecord) : kShortRecord;
 }
+
+// A face of more than three corners, fanned from its first corner into the triangles
+// first, first + 1, ..., first + corners - 3 of faces.bin.
+struct PolygonRecord {
+  uint64_t first;
+  uint32_t corners, pad;
+};
 
 // Buffered writer to `path`, visible under that name only after commit().
 class RecordWriter {

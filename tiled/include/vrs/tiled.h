@@ -36,9 +36,6 @@ struct Level {
   double ratio = 1.0;  // what each tile keeps at this level
   // Tiles of up to the whole budget (a level after one that stalled): run one at a time.
   bool serial = false;
-  // The input has faces of more than three corners: a tiled run writes them as triangles
-  // (in core the untouched ones stay whole).
-  bool polygons = false;
 };
 
 // "" when a tiled run can write `output` from `input`, else why not: a tiled run writes the
