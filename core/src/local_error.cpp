@@ -13,19 +13,21 @@ namespace {
 constexpr double kFarCorner2 = 1e12; // squared: a corner 1e6 times farther
 } // namespace
 
-double point_triangle_distance2(Vec3 p, Vec3 a, Vec3 b, Vec3 c) {
+double point_triangle_distance2(const Vec3& p, const Vec3& a0, const Vec3& b0, const Vec3& c0) {
   auto len2 = [](Vec3 d) { return dot(d, d); };
   // From a corner a million times farther than another the region tests cancel (a face with
   // a corner at 1e21 put a point 33 from it at 105 or 1.3e5, the fuzzer's spike): measured
   // from the nearest corner then. Only then: elsewhere the same arithmetic, the same ties.
-  const double pa = len2(p - a), pb = len2(p - b), pc = len2(p - c);
+  // (The corners by reference: by value, 24 bytes each, every call copied them.)
+  const Vec3 *ra = &a0, *rb = &b0, *rc = &c0;
+  const double pa = len2(p - a0), pb = len2(p - b0), pc = len2(p - c0);
   if (pa > kFarCorner2 * std::min(pb, pc)) {
-    const Vec3 t = a;
     if (pb <= pc)
-      a = b, b = c, c = t;
+      ra = &b0, rb = &c0, rc = &a0;
     else
-      a = c, c = b, b = t;
+      ra = &c0, rb = &a0, rc = &b0;
   }
+  const Vec3 &a = *ra, &b = *rb, &c = *rc;
   // Voronoi regions of the triangle's vertices, edges and face, in that order.
   Vec3 ab = b - a, ac = c - a, ap = p - a;
   double d1 = dot(ab, ap), d2 = dot(ac, ap);

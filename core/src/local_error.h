@@ -15,7 +15,8 @@ class Workers;
 
 // Distance from p to the triangle (a, b, c), exact (closest point on the triangle).
 double point_triangle_distance(Vec3 p, Vec3 a, Vec3 b, Vec3 c);
-double point_triangle_distance2(Vec3 p, Vec3 a, Vec3 b, Vec3 c); // squared
+double point_triangle_distance2(const Vec3& p, const Vec3& a, const Vec3& b,
+                                const Vec3& c); // squared
 // Distance from p to the segment (a, b).
 double distance_to_segment(Vec3 p, Vec3 a, Vec3 b);
 

@@ -11,12 +11,32 @@ namespace vrs {
 
 namespace {
 constexpr int kSlideGrid = 2; // a fan triangle's points against the input: L x L
+
+// Per face: the squared distance from x to its centre, and the square of its radius plus
+// `reach`; on unaliased arrays, so that the compiler makes it vector arithmetic.
+void centre_distances(LocalInput& in, Vec3 x, double reach) {
+  const double* __restrict cx = in.cx.data();
+  const double* __restrict cy = in.cy.data();
+  const double* __restrict cz = in.cz.data();
+  const double* __restrict radius = in.radius.data();
+  double* __restrict dc2 = in.dc2.data();
+  double* __restrict reach2 = in.reach2.data();
+  const int n = in.count;
+  const double px = x.x, py = x.y, pz = x.z;
+  for (int f = 0; f < n; ++f) {
+    const double dx = px - cx[f], dy = py - cy[f], dz = pz - cz[f];
+    dc2[f] = dx * dx + dy * dy + dz * dz;
+    const double r = radius[f] + reach;
+    reach2[f] = r * r;
+  }
+}
 } // namespace
 
 void LocalInput::resize(size_t faces) {
   for (auto* x : {&a, &b, &c, &n})
     x->resize(faces);
-  for (auto* x : {&cx, &cy, &cz, &radius, &d2, &dc2})
+  close.resize(faces);
+  for (auto* x : {&cx, &cy, &cz, &radius, &d2, &dc2, &reach2})
     x->resize(faces);
 }
 
@@ -45,16 +65,21 @@ double measure_against(const Patch& patch, LocalInput& in, bool& folds, double s
       };
       // The faces that may be nearest or tie with it (within the last point's nearest
       // face's reach, which only shrinks), and among them the one whose centre is
-      // nearest: most often the nearest face, measured first it leaves few others.
-      std::vector<int>& close = in.close;
-      close.clear();
+      // nearest: most often the nearest face, measured first it leaves few others. The
+      // distances to every centre in a loop of their own (vector arithmetic), then the list
+      // made without a branch (most faces are not on it): a slide's time is mostly here.
+      centre_distances(in, x, reach);
+      const double* reach2 = in.reach2.data();
+      int* close = in.close.data();
+      int closes = 0;
+      for (int f = 0; f < in.count; ++f) {
+        close[closes] = f;
+        closes += dc2[f] <= reach2[f]; // within(f, reach)
+      }
       int centred = hint;
       double centre2 = std::numeric_limits<double>::infinity();
-      for (int f = 0; f < in.count; ++f) {
-        const double dx = x.x - in.cx[f], dy = x.y - in.cy[f], dz = x.z - in.cz[f];
-        dc2[f] = dx * dx + dy * dy + dz * dz;
-        if (!within(f, reach)) continue;
-        close.push_back(f);
+      for (int i = 0; i < closes; ++i) {
+        const int f = close[i];
         d2[f] = std::numeric_limits<double>::infinity();
         if (dc2[f] < centre2) centre2 = dc2[f], centred = f;
       }
@@ -64,7 +89,8 @@ double measure_against(const Patch& patch, LocalInput& in, bool& folds, double s
         if (d2[centred] < best) best = d2[centred], hint = centred;
       }
       double s = std::sqrt(best);
-      for (int f : close) {
+      for (const int* f_ = close; f_ != close + closes; ++f_) {
+        const int f = *f_;
         if (d2[f] != std::numeric_limits<double>::infinity()) continue; // measured above
         if (within(f, s)) {
           d2[f] = point_triangle_distance2(x, in.a[f], in.b[f], in.c[f]);
@@ -76,7 +102,8 @@ double measure_against(const Patch& patch, LocalInput& in, bool& folds, double s
       const double tie = InputSurface::tie_reach2(best, x);
       const double tie_s = std::sqrt(tie);
       bool agrees = false;
-      for (int f : close) {
+      for (const int* f_ = close; f_ != close + closes; ++f_) {
+        const int f = *f_;
         if (!within(f, tie_s)) continue;
         if (d2[f] == std::numeric_limits<double>::infinity())
           d2[f] = point_triangle_distance2(x, in.a[f], in.b[f], in.c[f]);

@@ -19,7 +19,7 @@ struct LocalInput {
   std::vector<uint32_t> face; // numbers into InputSurface's faces
   std::vector<Vec3> a, b, c, n;
   std::vector<double> cx, cy, cz, radius; // each face's bounding sphere
-  std::vector<double> d2, dc2;            // measure_against's, per point: to each face, its centre
+  std::vector<double> d2, dc2, reach2;    // measure_against's, per point: to each face, its centre
   double mean_area = 0;
   std::vector<int> close; // measure_against's, per point: the faces that may be nearest
 

@@ -17,13 +17,6 @@ bool is_convex(const Vec2* p, int k) {
   return true;
 }
 
-double triangle_score(Vec3 a, Vec3 b, Vec3 c, Vec3 n) {
-  // quality * facing = (2√3 |x| / Σe²) * (x·n / |x|) with x = (b-a)×(c-a): no square root.
-  double facing = dot(cross(b - a, c - a), n);
-  double sum = dot(b - a, b - a) + dot(c - b, c - b) + dot(a - c, a - c);
-  return facing > 0 && sum > 0 ? 3.4641016151377544 * facing / sum : 0.0;
-}
-
 void triangulate_fan(const Vec2*, const Vec3* q, Vec3 n, int k, Patch& out) {
   int best = 0;
   double best_worst = -1;

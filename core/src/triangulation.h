@@ -49,7 +49,13 @@ int triangle_under(const Patch& patch, Vec2 s);
 // Score of a new triangle (a, b, c) in 3D: its shape quality times how squarely it faces the
 // projection normal n. Shape alone would happily pick a well-shaped triangle standing across
 // the surface (a chord through the solid); facing n keeps the patch on the surface.
-double triangle_score(Vec3 a, Vec3 b, Vec3 c, Vec3 n);
+// Inline: the fans' and ears' inner loops call it for every triangle they weigh.
+inline double triangle_score(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& n) {
+  // quality * facing = (2√3 |x| / Σe²) * (x·n / |x|) with x = (b-a)×(c-a): no square root.
+  double facing = dot(cross(b - a, c - a), n);
+  double sum = dot(b - a, b - a) + dot(c - b, c - b) + dot(a - c, a - c);
+  return facing > 0 && sum > 0 ? 3.4641016151377544 * facing / sum : 0.0;
+}
 
 // Fan from the apex whose worst triangle scores best (3D positions `q`, projection normal n).
 void triangulate_fan(const Vec2* p, const Vec3* q, Vec3 n, int k, Patch& out);
