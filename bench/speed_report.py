@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """bench/speed.csv -> bench/SPEED.md: medians of alternated runs, ratios to meshoptimizer.
 
-usage: speed_report.py CSV OUT.md [SERIAL.csv]
+usage: speed_report.py CSV OUT.md [SERIAL.csv [CEILING.csv]]
 """
 import csv
 import datetime
@@ -137,8 +137,35 @@ def serial_section(path):
     return out
 
 
+def ceiling_section(path):
+    """Two one-thread runs at once against one alone: what two threads can get here at best."""
+    rows = defaultdict(list)
+    for row in csv.DictReader(open(path)):
+        rows[row["mesh"]].append(row)
+    out = ["", "## What two threads can get on this machine", "",
+           "`vrs_bench --serial`, bunny00 Loop-subdivided to 10 %, in turn: one thread alone, two "
+           "one-thread runs at once (they share nothing: no memory, no work), one run on two "
+           "threads; medians. Two independent runs each taking longer than one alone is the "
+           "machine's own loss (shared caches, memory, a host's other guests); 2 × alone ÷ pair is "
+           "then the most two threads can give, and the run's scaling is judged against it too.", "",
+           "| mesh | n | one alone s | each of two at once s | two threads s | ceiling | scaling | of the ceiling | target ≥ 1.9× |",
+           "|---|---|---|---|---|---|---|---|---|"]
+    med = statistics.median
+    for mesh, rs in rows.items():
+        alone = med(float(r["alone"]) for r in rs)
+        pair = med(x for r in rs for x in (float(r["pair_a"]), float(r["pair_b"])))
+        two = med(float(r["two_threads"]) for r in rs)
+        ceil, scale = 2 * alone / pair, alone / two
+        out.append(f"| {mesh} | {len(rs)} | {alone:.2f} | {pair:.2f} | {two:.2f} | {ceil:.2f}× "
+                   f"| {scale:.2f}× | {100 * scale / ceil:.0f} % | {'met' if scale >= 1.9 else '**missed**'} |")
+    return out
+
+
 if __name__ == "__main__":
     main(*sys.argv[1:3])
     if len(sys.argv) > 3 and os.path.exists(sys.argv[3]):
         with open(sys.argv[2], "a") as f:
             f.write("\n".join(serial_section(sys.argv[3])) + "\n")
+    if len(sys.argv) > 4 and os.path.exists(sys.argv[4]):
+        with open(sys.argv[2], "a") as f:
+            f.write("\n".join(ceiling_section(sys.argv[4])) + "\n")
