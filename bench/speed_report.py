@@ -163,9 +163,11 @@ def ceiling_section(path):
 
 if __name__ == "__main__":
     main(*sys.argv[1:3])
+    extra = []
     if len(sys.argv) > 3 and os.path.exists(sys.argv[3]):
-        with open(sys.argv[2], "a") as f:
-            f.write("\n".join(serial_section(sys.argv[3])) + "\n")
+        extra += serial_section(sys.argv[3])
     if len(sys.argv) > 4 and os.path.exists(sys.argv[4]):
+        extra += ceiling_section(sys.argv[4])
+    if extra:
         with open(sys.argv[2], "a") as f:
-            f.write("\n".join(ceiling_section(sys.argv[4])) + "\n")
+            f.write("\n".join(extra) + "\n")
