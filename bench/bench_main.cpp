@@ -9,8 +9,10 @@
 //             our certified bound (rows: mesh,input_faces,bound,method,output_faces,seconds,
 //             error_max,error_mean,certified)
 //   vrs_bench --serial MESH RATIO [THREADS]    our default run instrumented: "seconds
-//                                             parallel_seconds serial_fraction" (the time in
-//                                             loops spread over the threads, and the rest)
+//                                             parallel_seconds serial_fraction by_chunks_8
+//                                             by_chunks_16" (the time in loops spread over the
+//                                             threads, the rest, and on one thread the speed-up
+//                                             its loops' chunks allow on 8 and 16)
 //   vrs_bench --loop MESH LEVELS OUT.ply       Loop subdivision (large inputs)
 //   vrs_bench --terrain K OUT.ply              (2^K + 1)^2 fractal terrain
 //   vrs_bench --streamed-terrain N OUT.ply     N^2 terrain written a row at a time (any size)
@@ -249,8 +251,9 @@ int serial(int argc, char** argv) {
     std::fprintf(stderr, "vrs_bench: %s\n", r.message.c_str());
     return 1;
   }
-  std::printf("%.4f %.4f %.4f\n", r.seconds, r.parallel_seconds,
-              1.0 - r.parallel_seconds / r.seconds);
+  std::printf("%.4f %.4f %.4f %.2f %.2f\n", r.seconds, r.parallel_seconds,
+              1.0 - r.parallel_seconds / r.seconds, r.seconds / r.projected_seconds_8,
+              r.seconds / r.projected_seconds_16);
   return 0;
 }
 

@@ -50,12 +50,12 @@ fi
 # beside one alone and one on two threads, REPEATS times in turn (a VM's two cores may share a
 # physical core or the host's memory: the 1.9x target means nothing past this ceiling). The
 # first lone run's own account of its serial part (time outside the loops spread over the
-# threads) is the base of the projection to more cores.
+# threads) and of its loops' chunks is the base of the projection to more cores.
 serial=$top/bench/speed_serial.csv
 ceiling=$top/bench/speed_ceiling.csv
-echo "mesh,seconds,parallel_seconds,serial_fraction" >"$serial"
+echo "mesh,seconds,parallel_seconds,serial_fraction,by_chunks_8,by_chunks_16" >"$serial"
 echo "mesh,alone,pair_a,pair_b,two_threads" >"$ceiling"
-measure() { "$bench" --serial "$1" 0.1 "$2"; } # "seconds parallel_seconds serial_fraction"
+measure() { "$bench" --serial "$1" 0.1 "$2"; } # "seconds parallel_seconds serial_fraction by_chunks_8 by_chunks_16"
 seconds() { measure "$@" | cut -d' ' -f1; }
 for l in 2 3; do
   mesh=$inputs/bunny_loop$l.ply

@@ -80,7 +80,9 @@ template <class Queue> void Simplifier::reprice(Queue& queue) {
   // A vertex is next to at most one removal of a batch, so the list has no repeats, and each
   // price reads only the vertex's own ring.
   repriced_.resize(reprice_.size());
-  workers_.for_each(reprice_.size(), [&](size_t i) { repriced_[i] = price_now(reprice_[i]); });
+  // A price is a plan: one a chunk, as the batch's (scheduler.cpp).
+  workers_.for_each(
+      reprice_.size(), [&](size_t i) { repriced_[i] = price_now(reprice_[i]); }, 1);
   const bool by_factor = opt_.target.kind == TargetKind::MaxFactor;
   for (size_t i = 0; i < reprice_.size(); ++i) {
     const uint32_t u = reprice_[i];

@@ -62,23 +62,28 @@ void Simplifier::plan_removal(Planned& p) const {
 }
 
 template <class Queue> void Simplifier::plan_batch(size_t count, const Queue& queue) {
+  // One plan a chunk: most batches of the whole queue's last removals hold a few plans (5 358
+  // of 6 885 at 1.2 M faces held four or fewer), which a grain of 4 left on one thread.
   const uint32_t* tris = mesh_.triangles.data();
-  workers_.for_each(count, [&](size_t b) {
-    Planned& p = batch_[b];
-    p.v = batch_ids_[b];
-    p.from = batch_from_;
-    if (b + 2 < count) topo_.prefetch_list(batch_ids_[b + 2]);
-    if (b + 1 < count) topo_.prefetch_faces(batch_ids_[b + 1], tris);
-    plan_removal(p);
-    if (!p.usable || p.why != RejectCount) return;
-    for (int i = -1; i < p.ring.verts; ++i) {
-      const uint32_t u = i < 0 ? p.v : p.ring.v[i];
-      queue.prefetch(u);
-      prefetch(&flags_[u]);
-      prefetch(&factor_[u]);
-      if (lazy_) prefetch(&fan_area_[u]);
-    }
-  });
+  workers_.for_each(
+      count,
+      [&](size_t b) {
+        Planned& p = batch_[b];
+        p.v = batch_ids_[b];
+        p.from = batch_from_;
+        if (b + 2 < count) topo_.prefetch_list(batch_ids_[b + 2]);
+        if (b + 1 < count) topo_.prefetch_faces(batch_ids_[b + 1], tris);
+        plan_removal(p);
+        if (!p.usable || p.why != RejectCount) return;
+        for (int i = -1; i < p.ring.verts; ++i) {
+          const uint32_t u = i < 0 ? p.v : p.ring.v[i];
+          queue.prefetch(u);
+          prefetch(&flags_[u]);
+          prefetch(&factor_[u]);
+          if (lazy_) prefetch(&fan_area_[u]);
+        }
+      },
+      /*grain=*/1);
 }
 
 template void Simplifier::plan_batch(size_t, const BucketQueue&);

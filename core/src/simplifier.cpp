@@ -210,6 +210,8 @@ Report simplify(Mesh& mesh, const Options& options) {
   s.compact();
   rep.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   rep.parallel_seconds = s.parallel_seconds();
+  rep.projected_seconds_8 = rep.seconds - rep.parallel_seconds + s.span_seconds(8);
+  rep.projected_seconds_16 = rep.seconds - rep.parallel_seconds + s.span_seconds(16);
   rep.ok = true;
   rep.target_reached = rep.stop == StopReason::TargetReached || rep.stop == StopReason::MaxFactor ||
                        rep.stop == StopReason::LastInterval || rep.stop == StopReason::ErrorBound;

@@ -96,6 +96,7 @@ class Simplifier {
   std::vector<uint8_t> slide_target_;
   std::vector<uint32_t> slide_corner_;
   double parallel_seconds() const { return workers_.parallel_seconds(); }
+  double span_seconds(int threads) const { return workers_.span_seconds(threads); }
   // Why the remaining vertices stay, when the target was not met (Report::stop_detail).
   std::string explain_stop() const; // stop_explanation.cpp
 

@@ -127,7 +127,7 @@ SpatialOrder spatial_order(std::vector<float>& positions, std::vector<uint32_t>&
   };
   UninitVector<uint32_t> start(n);
   std::vector<size_t> in_range(ranges + 1, 0);
-  for_each_on(workers, ranges, [&](size_t r) {
+  for_each_range_on(workers, ranges, [&](size_t r) {
     const auto [lo, hi] = range_of(r, ranges, n);
     std::fill(start.begin() + lo, start.begin() + hi, 0u);
     for (size_t f = 0; f < faces; ++f) {
@@ -140,7 +140,7 @@ SpatialOrder spatial_order(std::vector<float>& positions, std::vector<uint32_t>&
   for (size_t r = 0; r < ranges; ++r)
     in_range[r + 1] += in_range[r];
   order.face_old.resize(faces);
-  for_each_on(workers, ranges, [&](size_t r) {
+  for_each_range_on(workers, ranges, [&](size_t r) {
     const auto [lo, hi] = range_of(r, ranges, n);
     uint32_t at = uint32_t(in_range[r]);
     for (size_t v = lo; v < hi; ++v) {

@@ -59,7 +59,7 @@ bool position_classes(const std::vector<uint32_t>& tris, const std::vector<float
   const size_t groups = range_count(workers);
   cls.resize(n);
   // Referenced vertices: a range of vertices a thread, each reading every corner.
-  for_each_on(workers, groups, [&](size_t g) {
+  for_each_range_on(workers, groups, [&](size_t g) {
     const auto [lo, hi] = range_of(g, groups, n);
     std::fill(cls.begin() + lo, cls.begin() + hi, kNone);
     for (uint32_t v : tris)
@@ -69,7 +69,7 @@ bool position_classes(const std::vector<uint32_t>& tris, const std::vector<float
   // Each group's finds are kept apart and written after: every group reads every vertex's
   // entry (referenced or not) while the others search.
   std::vector<std::vector<std::pair<uint32_t, uint32_t>>> same(groups);
-  for_each_on(workers, groups, [&](size_t g) {
+  for_each_range_on(workers, groups, [&](size_t g) {
     size_t members = 0;
     for (uint32_t v = 0; v < n; ++v)
       members += cls[v] != kNone && group_of(position_hash(&pos[3 * size_t(v)])) == g;
@@ -94,7 +94,7 @@ bool position_classes(const std::vector<uint32_t>& tris, const std::vector<float
       }
     }
   });
-  for_each_on(workers, groups, [&](size_t g) {
+  for_each_range_on(workers, groups, [&](size_t g) {
     for (const auto& [v, u] : same[g])
       cls[v] = u;
   });

@@ -19,7 +19,7 @@ void Topology::build(const std::vector<uint32_t>& triangles, size_t vertex_count
   capacity_.resize(vertex_count);
   is_hub_.resize(vertex_count);
   std::vector<size_t> slots(ranges + 1, 0);
-  for_each_on(workers, ranges, [&](size_t r) {
+  for_each_range_on(workers, ranges, [&](size_t r) {
     const auto [lo, hi] = range(r);
     // Slack of 2 per vertex: after a removal a neighbour usually gains at most one or two
     // faces, so most slices never move.
@@ -34,7 +34,7 @@ void Topology::build(const std::vector<uint32_t>& triangles, size_t vertex_count
     slots[r + 1] += slots[r];
   pool_.reserve(slots[ranges] + slots[ranges] / 4);
   pool_.resize(slots[ranges]);
-  for_each_on(workers, ranges, [&](size_t r) {
+  for_each_range_on(workers, ranges, [&](size_t r) {
     const auto [lo, hi] = range(r);
     size_t offset = slots[r];
     for (size_t v = lo; v < hi; ++v) {

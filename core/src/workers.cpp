@@ -35,6 +35,15 @@ void for_each_on(Workers* workers, size_t n, const std::function<void(size_t)>& 
     fn(i);
 }
 
+void for_each_range_on(Workers* workers, size_t n, const std::function<void(size_t)>& fn) {
+  if (workers) {
+    workers->for_each_range(n, fn);
+    return;
+  }
+  for (size_t i = 0; i < n; ++i)
+    fn(i);
+}
+
 void for_each_block(Workers* workers, size_t n, size_t block,
                     const std::function<void(size_t, size_t)>& fn) {
   for_each_on(workers, (n + block - 1) / block,
@@ -93,11 +102,26 @@ void Workers::serve() {
 }
 
 void Workers::for_each(size_t n, const std::function<void(size_t)>& fn, size_t grain) {
+  timed(n, fn, grain, false);
+}
+
+void Workers::for_each_range(size_t n, const std::function<void(size_t)>& fn) {
+  timed(n, fn, 1, true);
+}
+
+void Workers::timed(size_t n, const std::function<void(size_t)>& fn, size_t grain, bool ranges) {
   if (n == 0) return;
   const auto start = std::chrono::steady_clock::now();
   spread(n, fn, grain);
-  parallel_seconds_ +=
-      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  parallel_seconds_ += t;
+  // The projection's rounds (span_seconds): a range loop has one range a thread at any count.
+  const size_t g = std::max<size_t>(1, grain), chunks = (n + g - 1) / g;
+  const size_t counts[2] = {8, 16};
+  for (int i = 0; i < 2; ++i) {
+    const size_t p = counts[i], c = ranges ? p : chunks;
+    span_[i] += t * double((c + p - 1) / p) / double(c);
+  }
 }
 
 void Workers::spread(size_t n, const std::function<void(size_t)>& fn, size_t grain) {

@@ -28,9 +28,17 @@ class Workers {
   // Calls fn(i) for every i in [0, n) and returns when all calls are done. Items are handed
   // out `grain` at a time to whichever thread is free.
   void for_each(size_t n, const std::function<void(size_t)>& fn, size_t grain = 4);
+  // The same over `n` ranges, one a thread (range_of): a loop that divides by the threads
+  // whatever their number.
+  void for_each_range(size_t n, const std::function<void(size_t)>& fn);
   // Wall time spent in for_each so far: the work spread over the threads (the rest of a run
   // is its serial part, the base of Amdahl's projection in bench/SPEED.md).
   double parallel_seconds() const { return parallel_seconds_; }
+  // What those loops would take on 8 (16) threads, from a run on one: each loop's time over
+  // its chunks (grain items, or one range a thread), ceil(chunks / threads) rounds of the
+  // mean chunk. A loop of one chunk runs on one thread at any count, and a loop of 20 chunks
+  // takes two rounds on 16 (Amdahl's split into "serial" and "even" misses both).
+  double span_seconds(int threads) const { return threads == 8 ? span_[0] : span_[1]; }
 
  private:
   void serve();
@@ -49,6 +57,8 @@ class Workers {
   std::atomic<int> busy_{0};          // threads of the pool still in the current loop
   std::atomic<bool> quit_{false};
   double parallel_seconds_ = 0;
+  double span_[2] = {0, 0}; // span_seconds(8), span_seconds(16)
+  void timed(size_t n, const std::function<void(size_t)>& fn, size_t grain, bool ranges);
   void spread(size_t n, const std::function<void(size_t)>& fn, size_t grain);
 };
 
@@ -56,6 +66,8 @@ class Workers {
 // that also run without a pool).
 void for_each_on(Workers* workers, size_t n, const std::function<void(size_t)>& fn,
                  size_t grain = 1);
+// workers->for_each_range(n, fn) when given, else every fn(i) on the caller.
+void for_each_range_on(Workers* workers, size_t n, const std::function<void(size_t)>& fn);
 
 // fn(begin, end) over [0, n) in blocks of `block` indices (the last one shorter), handed out
 // with for_each_on: a block is one item.

@@ -26,6 +26,38 @@ TEST(Workers, EveryItemRunsOnceWhateverTheThreadsAndGrain) {
       }
 }
 
+// The projection to more threads (bench/SPEED.md, "by chunks"): each loop's own time in rounds
+// of its chunks. Arithmetic on the times measured, so exact whatever the machine's speed.
+TEST(Workers, LoopsAreProjectedInRoundsOfTheirChunks) {
+  auto spin = [](size_t) {
+    volatile double x = 0;
+    for (int k = 0; k < 20000; ++k)
+      x = x + std::sqrt(double(k));
+  };
+  struct Case {
+    size_t n, grain;
+    bool ranges;
+    double rounds8, rounds16; // the share of the loop's time on 8 and 16 threads
+  };
+  for (const Case& c : {Case{1, 1, false, 1.0, 1.0}, // one chunk: one thread at any count
+                        Case{3, 4, false, 1.0, 1.0}, // under a grain: one chunk too
+                        Case{32, 1, false, 4.0 / 32, 2.0 / 32},
+                        Case{20, 1, false, 3.0 / 20, 2.0 / 20}, // 20 chunks: two rounds on 16
+                        Case{40, 4, false, 2.0 / 10, 1.0 / 10},
+                        Case{1, 1, true, 1.0 / 8, 1.0 / 16}}) { // a range a thread
+    Workers w(1);
+    if (c.ranges)
+      w.for_each_range(c.n, spin);
+    else
+      w.for_each(c.n, spin, c.grain);
+    const double t = w.parallel_seconds();
+    ASSERT_GT(t, 0.0);
+    EXPECT_NEAR(w.span_seconds(8), t * c.rounds8, 1e-12 * t) << c.n << " items, grain " << c.grain;
+    EXPECT_NEAR(w.span_seconds(16), t * c.rounds16, 1e-12 * t)
+        << c.n << " items, grain " << c.grain;
+  }
+}
+
 namespace {
 
 struct Outcome {
