@@ -117,9 +117,8 @@ void Workers::timed(size_t n, const std::function<void(size_t)>& fn, size_t grai
   parallel_seconds_ += t;
   // The projection's rounds (span_seconds): a range loop has one range a thread at any count.
   const size_t g = std::max<size_t>(1, grain), chunks = (n + g - 1) / g;
-  const size_t counts[2] = {8, 16};
   for (int i = 0; i < 2; ++i) {
-    const size_t p = counts[i], c = ranges ? p : chunks;
+    const size_t p = size_t(kProjected[i]), c = ranges ? p : chunks;
     span_[i] += t * double((c + p - 1) / p) / double(c);
   }
 }

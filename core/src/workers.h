@@ -8,6 +8,7 @@
 #include <condition_variable>
 #include <cstddef>
 #include <functional>
+#include <limits>
 #include <mutex>
 #include <thread>
 #include <utility>
@@ -38,7 +39,13 @@ class Workers {
   // its chunks (grain items, or one range a thread), ceil(chunks / threads) rounds of the
   // mean chunk. A loop of one chunk runs on one thread at any count, and a loop of 20 chunks
   // takes two rounds on 16 (Amdahl's split into "serial" and "even" misses both).
-  double span_seconds(int threads) const { return threads == 8 ? span_[0] : span_[1]; }
+  // Projected for kProjected's counts only (NaN for any other).
+  static constexpr int kProjected[2] = {8, 16};
+  double span_seconds(int threads) const {
+    for (int i = 0; i < 2; ++i)
+      if (threads == kProjected[i]) return span_[i];
+    return std::numeric_limits<double>::quiet_NaN();
+  }
 
  private:
   void serve();
@@ -57,7 +64,7 @@ class Workers {
   std::atomic<int> busy_{0};          // threads of the pool still in the current loop
   std::atomic<bool> quit_{false};
   double parallel_seconds_ = 0;
-  double span_[2] = {0, 0}; // span_seconds(8), span_seconds(16)
+  double span_[2] = {0, 0}; // span_seconds(kProjected[i])
   void timed(size_t n, const std::function<void(size_t)>& fn, size_t grain, bool ranges);
   void spread(size_t n, const std::function<void(size_t)>& fn, size_t grain);
 };
