@@ -129,8 +129,10 @@ def serial_section(path):
            "over the cores. **By chunks** does not: each loop's time is split into the chunks its "
            "threads take in turn (grain items, or one range a thread), and 8 or 16 threads take "
            "ceil(chunks / threads) rounds of the mean chunk, so a loop of one chunk (a batch of a "
-           "few plans) stays on one thread and a loop of 20 chunks takes two rounds on 16. Unequal "
-           "chunks (the parts' rounds), memory bandwidth and the machine's own loss (below) take "
+           "few plans) stays on one thread and a loop of 20 chunks takes two rounds on 16. A loop "
+           "of long chunks (50 us or more: the parts' rounds) is timed chunk by chunk and its "
+           "chunks handed in order to whichever thread is free first, as the workers do (the "
+           "parts dearest first). Memory bandwidth and the machine's own loss (below) take "
            "more; the target is judged by chunks.", "",
            "| mesh | run s | in shared loops s | serial fraction | Amdahl 8 / 16 cores | by chunks 8 / 16 cores | target (16) | |",
            "|---|---|---|---|---|---|---|---|"]

@@ -2,8 +2,9 @@
 # Sets up, builds and runs every test: the Release build in build/ (core, CLI, the sweep over
 # the real meshes, and the plugin in every host: MeshLab 2020.09's meshlabserver and GUI, the
 # real MeshLab 2022.02 and 2025.07 GUIs in Debian trixie and sid roots, pymeshlab; the Debian
-# packages installed with apt-get), the wheel in a fresh virtual environment (with the examples
-# the README and the documentation show), the documentation site, then the core, CLI
+# packages installed with apt-get); then, the wheel in a fresh virtual environment (with the
+# examples the README and the documentation show) and the documentation site in a lane beside
+# the sanitizer builds (its log printed when they are done): the core, CLI
 # and sweep tests again built with AddressSanitizer + UndefinedBehaviorSanitizer in build/asan/
 # (MeshLab cannot load an instrumented plugin), the thread, parts, fan-split and set-up tests under
 # ThreadSanitizer in build/tsan/, then a bounded libFuzzer run (VRS_FUZZ_SECONDS, default 120,
@@ -15,17 +16,30 @@ top=$(cd "$(dirname "$0")/.." && pwd)
 "$top/scripts/setup.sh" --roots
 "$top/scripts/build.sh" -DVRS_BUILD_TESTS=ON
 (cd "$top/build" && ctest --output-on-failure -j "$(nproc)")
-echo "== the Python package: the wheel built, installed in a fresh virtual environment, tested"
-"$top/scripts/test_wheel.sh"
-echo "== the documentation site, built with --strict"
-"$top/scripts/docs.sh"
-if [ "${1:-}" != "--no-sanitizers" ]; then
+python_lane() {
+  echo "== the Python package: the wheel built, installed in a fresh virtual environment, tested"
+  "$top/scripts/test_wheel.sh"
+  echo "== the documentation site, built with --strict"
+  "$top/scripts/docs.sh"
+}
+if [ "${1:-}" = "--no-sanitizers" ]; then
+  python_lane
+else
+  # The wheels and the site in a lane of their own beside the sanitizer builds: pip, the venvs
+  # and one pytest process at a time kept one core of two busy (20 of the 85 minutes of a run on
+  # a fresh, slow machine). Its own session, so that a failure here stops all of it.
+  export -f python_lane
+  export top
+  setsid -w bash -c "set -euo pipefail; python_lane" >"$top/build/python-lane.log" 2>&1 &
+  lane=$!
+  trap 'kill -- -$lane 2>/dev/null || true' EXIT
   echo "== the same tests under AddressSanitizer + UndefinedBehaviorSanitizer"
   cmake -S "$top" -B "$top/build/asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVRS_SANITIZE=ON \
     -DVRS_BUILD_TESTS=ON -DVRS_BUILD_PLUGIN=OFF -DVRS_BUILD_BENCH=OFF >/dev/null
   cmake --build "$top/build/asan" -j "$(nproc)"
+  # One thread against two and eight, as under ThreadSanitizer: the Release run compares three.
   (cd "$top/build/asan" && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
-    ctest --output-on-failure -j "$(nproc)")
+    VRS_TEST_THREAD_COUNTS=2,8 ctest --output-on-failure -j "$(nproc)")
   echo "== the worker threads under ThreadSanitizer"
   cmake -S "$top" -B "$top/build/tsan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVRS_TSAN=ON \
     -DVRS_BUILD_TESTS=ON -DVRS_BUILD_TOOLS=OFF -DVRS_BUILD_PLUGIN=OFF -DVRS_BUILD_BENCH=OFF >/dev/null
@@ -43,6 +57,11 @@ if [ "${1:-}" != "--no-sanitizers" ]; then
   wait $lane2 || status2=$?
   cat "$top/build/tsan/lane1.log" "$top/build/tsan/lane2.log"
   [ $status1 -eq 0 ] && [ $status2 -eq 0 ] || { echo "ThreadSanitizer: a lane failed"; exit 1; }
+  status=0
+  wait $lane || status=$?
+  trap - EXIT
+  cat "$top/build/python-lane.log"
+  [ $status -eq 0 ] || { echo "the Python package or the documentation failed (exit $status)"; exit 1; }
   echo "== libFuzzer on the core, ${VRS_FUZZ_SECONDS:-120} s"
   VRS_FUZZ_SEED=${VRS_FUZZ_SEED:-1} "$top/scripts/fuzz.sh" "${VRS_FUZZ_SECONDS:-120}"
 fi

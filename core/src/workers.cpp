@@ -109,11 +109,72 @@ void Workers::for_each_range(size_t n, const std::function<void(size_t)>& fn) {
   timed(n, fn, 1, true);
 }
 
+namespace {
+
+// A chunk this long or longer is timed on its own: the clock's two reads (tens of ns) are then
+// under a thousandth of it. The first chunk decides for its loop; the plans of a batch (a few
+// microseconds each) stay with rounds of their mean.
+constexpr double kTimedChunk = 50e-6;
+
+// The span of chunks handed out in order to whichever of `threads` is free first.
+double list_span(const std::vector<double>& chunks, size_t threads) {
+  std::vector<double> free_at(threads, 0.0); // a min-heap (std::greater) of finish times
+  for (double t : chunks) {
+    std::pop_heap(free_at.begin(), free_at.end(), std::greater<double>());
+    free_at.back() += t;
+    std::push_heap(free_at.begin(), free_at.end(), std::greater<double>());
+  }
+  return *std::max_element(free_at.begin(), free_at.end());
+}
+
+} // namespace
+
+bool Workers::timed_by_chunks(size_t n, const std::function<void(size_t)>& fn, size_t grain) {
+  using clock = std::chrono::steady_clock;
+  const size_t g = std::max<size_t>(1, grain);
+  auto start = clock::now();
+  for (size_t i = 0; i < std::min(n, g); ++i)
+    fn(i);
+  auto end = clock::now();
+  const double first = std::chrono::duration<double>(end - start).count();
+  chunk_seconds_.assign(1, first);
+  const bool by_chunks = first >= kTimedChunk;
+  for (size_t c = g; c < n; c += g) {
+    for (size_t i = c; i < std::min(n, c + g); ++i)
+      fn(i);
+    if (by_chunks) {
+      start = end;
+      end = clock::now();
+      chunk_seconds_.push_back(std::chrono::duration<double>(end - start).count());
+    }
+  }
+  if (!by_chunks) return false;
+  double t = 0;
+  for (double c : chunk_seconds_)
+    t += c;
+  parallel_seconds_ += t;
+  for (int i = 0; i < 2; ++i)
+    span_[i] += list_span(chunk_seconds_, size_t(kProjected[i]));
+  return true;
+}
+
 void Workers::timed(size_t n, const std::function<void(size_t)>& fn, size_t grain, bool ranges) {
   if (n == 0) return;
+  if (pool_.empty() && !ranges && n > grain) {
+    // On one thread (the projection's basis), long chunks are timed one by one.
+    const auto start = std::chrono::steady_clock::now();
+    if (timed_by_chunks(n, fn, grain)) return;
+    add_rounds(n, grain, false,
+               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+    return;
+  }
   const auto start = std::chrono::steady_clock::now();
   spread(n, fn, grain);
-  const double t = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  add_rounds(n, grain, ranges,
+             std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
+}
+
+void Workers::add_rounds(size_t n, size_t grain, bool ranges, double t) {
   parallel_seconds_ += t;
   // The projection's rounds (span_seconds): a range loop has one range a thread at any count.
   const size_t g = std::max<size_t>(1, grain), chunks = (n + g - 1) / g;

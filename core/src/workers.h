@@ -38,7 +38,10 @@ class Workers {
   // What those loops would take on 8 (16) threads, from a run on one: each loop's time over
   // its chunks (grain items, or one range a thread), ceil(chunks / threads) rounds of the
   // mean chunk. A loop of one chunk runs on one thread at any count, and a loop of 20 chunks
-  // takes two rounds on 16 (Amdahl's split into "serial" and "even" misses both).
+  // takes two rounds on 16 (Amdahl's split into "serial" and "even" misses both). A loop of
+  // long chunks (the parts) is timed chunk by chunk and its chunks handed out in order to
+  // whichever of the threads is free first, as for_each does: uneven chunks take longer than
+  // rounds of their mean, and a long one handed out last leaves the others idle.
   // Projected for kProjected's counts only (NaN for any other).
   static constexpr int kProjected[2] = {8, 16};
   double span_seconds(int threads) const {
@@ -64,8 +67,11 @@ class Workers {
   std::atomic<int> busy_{0};          // threads of the pool still in the current loop
   std::atomic<bool> quit_{false};
   double parallel_seconds_ = 0;
-  double span_[2] = {0, 0}; // span_seconds(kProjected[i])
+  double span_[2] = {0, 0};           // span_seconds(kProjected[i])
+  std::vector<double> chunk_seconds_; // a timed loop's chunks, on one thread
   void timed(size_t n, const std::function<void(size_t)>& fn, size_t grain, bool ranges);
+  bool timed_by_chunks(size_t n, const std::function<void(size_t)>& fn, size_t grain);
+  void add_rounds(size_t n, size_t grain, bool ranges, double seconds);
   void spread(size_t n, const std::function<void(size_t)>& fn, size_t grain);
 };
 

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
 #include <cmath>
 
 #include "mesh_checks.h"
@@ -31,7 +32,7 @@ TEST(Workers, EveryItemRunsOnceWhateverTheThreadsAndGrain) {
 TEST(Workers, LoopsAreProjectedInRoundsOfTheirChunks) {
   auto spin = [](size_t) {
     volatile double x = 0;
-    for (int k = 0; k < 20000; ++k)
+    for (int k = 0; k < 200; ++k) // short chunks (under a 50 us chunk): rounds of their mean
       x = x + std::sqrt(double(k));
   };
   struct Case {
@@ -55,6 +56,33 @@ TEST(Workers, LoopsAreProjectedInRoundsOfTheirChunks) {
     EXPECT_NEAR(w.span_seconds(8), t * c.rounds8, 1e-12 * t) << c.n << " items, grain " << c.grain;
     EXPECT_NEAR(w.span_seconds(16), t * c.rounds16, 1e-12 * t)
         << c.n << " items, grain " << c.grain;
+  }
+}
+
+// Long chunks (the parts) are timed one by one and handed out in order to the first free
+// thread: a long chunk last makes the loop at least as long as it and the chunks before it
+// that its thread ran, whatever the mean (rounds of the mean said 2 x 36/17 ms on 16 threads).
+TEST(Workers, LongChunksAreProjectedAsHandedOutToTheFirstFreeThread) {
+  auto busy = [](double seconds) {
+    const auto until = std::chrono::steady_clock::now() + std::chrono::duration<double>(seconds);
+    while (std::chrono::steady_clock::now() < until) {
+    }
+  };
+  for (const bool long_first : {true, false}) {
+    Workers w(1);
+    const size_t long_one = long_first ? 0 : 16;
+    w.for_each(
+        17, [&](size_t i) { busy(i == long_one ? 20e-3 : 1e-3); }, 1);
+    const double t = w.parallel_seconds();
+    ASSERT_GE(t, 36e-3);
+    // First: the long one runs beside all the others (16: the 16 short ones on 15 threads,
+    // 8: on 7). Last: it waits for a thread to finish its short one.
+    for (int threads : {8, 16}) {
+      const double floor = long_first ? 20e-3 : 21e-3;
+      EXPECT_GE(w.span_seconds(threads), floor) << threads << " threads, long first " << long_first;
+      // No more than the long one, its thread's short ones and a slack for a loaded machine.
+      EXPECT_LT(w.span_seconds(threads), t - 10e-3) << threads << " threads";
+    }
   }
 }
 
