@@ -129,16 +129,16 @@ double list_span(const std::vector<double>& chunks, size_t threads) {
 
 } // namespace
 
-bool Workers::timed_by_chunks(size_t n, const std::function<void(size_t)>& fn, size_t grain) {
+bool Workers::timed_by_chunks(size_t n, const std::function<void(size_t)>& fn, size_t grain,
+                              std::chrono::steady_clock::time_point start) {
   using clock = std::chrono::steady_clock;
   const size_t g = std::max<size_t>(1, grain);
-  auto start = clock::now();
   for (size_t i = 0; i < std::min(n, g); ++i)
     fn(i);
   auto end = clock::now();
   const double first = std::chrono::duration<double>(end - start).count();
-  chunk_seconds_.assign(1, first);
   const bool by_chunks = first >= kTimedChunk;
+  chunk_seconds_.assign(1, first);
   for (size_t c = g; c < n; c += g) {
     for (size_t i = c; i < std::min(n, c + g); ++i)
       fn(i);
@@ -149,10 +149,8 @@ bool Workers::timed_by_chunks(size_t n, const std::function<void(size_t)>& fn, s
     }
   }
   if (!by_chunks) return false;
-  double t = 0;
   for (double c : chunk_seconds_)
-    t += c;
-  parallel_seconds_ += t;
+    parallel_seconds_ += c;
   for (int i = 0; i < 2; ++i)
     span_[i] += list_span(chunk_seconds_, size_t(kProjected[i]));
   return true;
@@ -160,16 +158,13 @@ bool Workers::timed_by_chunks(size_t n, const std::function<void(size_t)>& fn, s
 
 void Workers::timed(size_t n, const std::function<void(size_t)>& fn, size_t grain, bool ranges) {
   if (n == 0) return;
+  const auto start = std::chrono::steady_clock::now();
   if (pool_.empty() && !ranges && n > grain) {
     // On one thread (the projection's basis), long chunks are timed one by one.
-    const auto start = std::chrono::steady_clock::now();
-    if (timed_by_chunks(n, fn, grain)) return;
-    add_rounds(n, grain, false,
-               std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
-    return;
+    if (timed_by_chunks(n, fn, grain, start)) return;
+  } else {
+    spread(n, fn, grain);
   }
-  const auto start = std::chrono::steady_clock::now();
-  spread(n, fn, grain);
   add_rounds(n, grain, ranges,
              std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count());
 }

@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <atomic>
+#include <chrono>
 #include <condition_variable>
 #include <cstddef>
 #include <functional>
@@ -70,7 +71,10 @@ class Workers {
   double span_[2] = {0, 0};           // span_seconds(kProjected[i])
   std::vector<double> chunk_seconds_; // a timed loop's chunks, on one thread
   void timed(size_t n, const std::function<void(size_t)>& fn, size_t grain, bool ranges);
-  bool timed_by_chunks(size_t n, const std::function<void(size_t)>& fn, size_t grain);
+  // Runs the loop on the caller; when its first chunk is long, adds its time chunk by chunk
+  // and returns true (else the caller adds it in rounds of the mean chunk).
+  bool timed_by_chunks(size_t n, const std::function<void(size_t)>& fn, size_t grain,
+                       std::chrono::steady_clock::time_point start);
   void add_rounds(size_t n, size_t grain, bool ranges, double seconds);
   void spread(size_t n, const std::function<void(size_t)>& fn, size_t grain);
 };
