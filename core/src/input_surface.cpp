@@ -101,14 +101,17 @@ void InputSurface::order_faces(const Evaluator& eval) const {
   for (size_t i = 0; i < faces; ++i) {
     if (order[i] == i) continue;
     const std::array<uint32_t, 3> first = {tris_[3 * i], tris_[3 * i + 1], tris_[3 * i + 2]};
+    const uint8_t first_turned = turned_.empty() ? 0 : turned_[i];
     for (size_t j = i;;) {
       const size_t k = order[j];
       order[j] = uint32_t(j);
       if (k == i) {
         std::copy(first.begin(), first.end(), &tris_[3 * j]);
+        if (!turned_.empty()) turned_[j] = first_turned;
         break;
       }
       std::copy_n(&tris_[3 * k], 3, &tris_[3 * j]);
+      if (!turned_.empty()) turned_[j] = turned_[k];
       j = k;
     }
   }
@@ -241,12 +244,14 @@ void InputSurface::build_now(const Evaluator& eval) const {
                c = eval.position(tris_[i + 2]);
     const double area2 = length(cross(b - a, c - a));
     if (is_finite(a) && is_finite(b) && is_finite(c) && area2 > 0) {
+      if (!turned_.empty()) turned_[kept / 3] = turned_[i / 3];
       for (int k = 0; k < 3; ++k)
         tris_[kept++] = tris_[i + k];
       mean_area_ += 0.5 * area2;
     }
   }
   tris_.resize(kept);
+  if (!turned_.empty()) turned_.resize(kept / 3);
   const size_t faces = tris_.size() / 3;
   if (faces == 0) return;
   mean_area_ /= double(faces);
@@ -303,8 +308,8 @@ double InputSurface::box_distance2(const Box& b, Vec3 x) const {
   return d2;
 }
 
-bool InputSurface::nearest(Vec3 x, const Evaluator& eval, double& d2, Vec3& normal,
-                           size_t* hint) const {
+bool InputSurface::nearest(Vec3 x, const Evaluator& eval, double& d2, Vec3& normal, size_t* hint,
+                           bool turned) const {
   if (levels_.empty()) return false;
   double best = std::numeric_limits<double>::infinity();
   size_t best_face = 0;
@@ -368,18 +373,19 @@ bool InputSurface::nearest(Vec3 x, const Evaluator& eval, double& d2, Vec3& norm
   }
   if (!(best < std::numeric_limits<double>::infinity())) return false;
   if (hint) *hint = best_face;
-  normal = face_normal(best_face, eval);
+  normal = face_normal(best_face, eval, turned);
   d2 = best;
   return true;
 }
 
-Vec3 InputSurface::face_normal(size_t f, const Evaluator& eval) const {
+Vec3 InputSurface::face_normal(size_t f, const Evaluator& eval, bool turned) const {
   const Vec3 a = eval.position(tris_[3 * f]);
-  return normalized(
-      cross(eval.position(tris_[3 * f + 1]) - a, eval.position(tris_[3 * f + 2]) - a));
+  const Vec3 n =
+      normalized(cross(eval.position(tris_[3 * f + 1]) - a, eval.position(tris_[3 * f + 2]) - a));
+  return !turned_.empty() && bool(turned_[f]) != turned ? n * -1.0 : n;
 }
 
-bool InputSurface::any_agrees(Vec3 x, double r2, Vec3 n, const Evaluator& eval) const {
+bool InputSurface::any_agrees(Vec3 x, double r2, Vec3 n, const Evaluator& eval, bool turned) const {
   std::array<std::pair<uint8_t, uint32_t>, 64> stack;
   int top = 0;
   stack[top++] = {uint8_t(levels_.size() - 1), 0u};
@@ -390,7 +396,7 @@ bool InputSurface::any_agrees(Vec3 x, double r2, Vec3 n, const Evaluator& eval) 
       const auto [first, last] = items_under(level, index);
       for (size_t i = first; i < last; ++i)
         if (const size_t f = item_face(i);
-            dot(face_normal(f, eval), n) > 0 &&
+            dot(face_normal(f, eval, turned), n) > 0 &&
             point_triangle_distance2(x, eval.position(tris_[3 * f]),
                                      eval.position(tris_[3 * f + 1]),
                                      eval.position(tris_[3 * f + 2])) <= r2)
@@ -404,13 +410,15 @@ bool InputSurface::any_agrees(Vec3 x, double r2, Vec3 n, const Evaluator& eval) 
   return false;
 }
 
-bool InputSurface::turned_at(Vec3 x, Vec3 n, const Evaluator& eval, size_t& hint) const {
+bool InputSurface::turned_at(Vec3 x, Vec3 n, const Evaluator& eval, size_t& hint,
+                             bool turned) const {
   double d2;
   Vec3 nearest_normal;
-  if (!nearest(x, eval, d2, nearest_normal, &hint) || dot(nearest_normal, n) > 0) return false;
+  if (!nearest(x, eval, d2, nearest_normal, &hint, turned) || dot(nearest_normal, n) > 0)
+    return false;
   // Ties (an input edge or crease nearest): measured again with a hair of slack, relative
   // to the point's magnitude (an absolute one took in the whole of a cube 2e-41 wide).
-  return !any_agrees(x, tie_reach2(d2, x), n, eval);
+  return !any_agrees(x, tie_reach2(d2, x), n, eval, turned);
 }
 
 int InputSurface::grid_side(double covers, int max_side) {
@@ -429,8 +437,8 @@ int InputSurface::grid_side(double covers, int max_side) {
   return side >= most ? most : side > 2 ? int(side) : 2;
 }
 
-bool InputSurface::folds(const Patch& patch, const Evaluator& eval, double min_covers,
-                         int max_side) const {
+bool InputSurface::folds(const Patch& patch, const Evaluator& eval, double min_covers, int max_side,
+                         uint64_t turned) const {
   build(eval);
   size_t hint = kNoFace; // the sample points are asked in order, each near the one before
   for (int t = 0; t < patch.count; ++t) {
@@ -441,14 +449,14 @@ bool InputSurface::folds(const Patch& patch, const Evaluator& eval, double min_c
     const double covers = 0.5 * length(area_normal) / mean_area_;
     if (covers < min_covers) continue;
     if (each_grid_point(a, b, c, grid_side(covers, max_side),
-                        [&](Vec3 x) { return turned_at(x, n, eval, hint); }))
+                        [&](Vec3 x) { return turned_at(x, n, eval, hint, turned >> t & 1); }))
       return true;
   }
   return false;
 }
 
 double InputSurface::folded_area(const Patch& patch, const Evaluator& eval, double min_area,
-                                 double budget) const {
+                                 double budget, uint64_t turned) const {
   build(eval);
   size_t hint = kNoFace;
   double folded = 0;
@@ -470,7 +478,7 @@ double InputSurface::folded_area(const Patch& patch, const Evaluator& eval, doub
     const int L = side < kGridMax ? std::max(2, int(side)) : kGridMax;
     const double per_point = area / double(L * L); // L * L sub-triangles of equal area
     if (each_grid_point(a, b, c, L, [&](Vec3 x) {
-          folded += turned_at(x, n, eval, hint) ? per_point : 0.0;
+          folded += turned_at(x, n, eval, hint, turned >> t & 1) ? per_point : 0.0;
           return folded > budget;
         }))
       break;

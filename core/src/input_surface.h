@@ -19,15 +19,34 @@
 
 namespace vrs {
 
+// Which of the run's faces it holds reversed from how they were written (InputSurface::keep's
+// `turned`), by face slot: as the output writes them back (output.cpp), by the input face of
+// a face's first corner.
+struct TurnedSlots {
+  const std::vector<uint8_t>* by_input_face = nullptr; // nullptr or empty: none
+  const std::vector<uint32_t>* corner_source = nullptr;
+  bool any() const { return by_input_face && !by_input_face->empty(); }
+  bool operator()(uint32_t slot) const {
+    return (*by_input_face)[(*corner_source)[3 * size_t(slot)] / 3];
+  }
+};
+
 class InputSurface {
  public:
   // Copies the faces (the live array is rewritten as the run goes). Cheap: the hierarchy is
   // built only when asked for (build), and most runs never ask.
-  void keep(const std::vector<uint32_t>& tris, Workers* workers = nullptr) {
+  // `turned` (a byte a face, or empty): the faces the run holds reversed from how they were
+  // written (orientation.h, turned_by_welding). A fold is then judged as written, as the
+  // output gives the faces back: a new triangle of the other orientation than the input face
+  // nearest it faces away where the run sees them agree (a slope across a staircase of
+  // pieces written in different orientations: boeing at 10 %, 2.4 % -> 1.0 % folded).
+  void keep(const std::vector<uint32_t>& tris, std::vector<uint8_t> turned = {},
+            Workers* workers = nullptr) {
     tris_.resize(tris.size()); // copied block by block on the workers
     for_each_block(workers, tris.size(), 3 * 65536, [&](size_t begin, size_t end) {
       std::copy(tris.begin() + begin, tris.begin() + end, tris_.begin() + begin);
     });
+    turned_ = std::move(turned);
   }
   // Builds the hierarchy over the faces kept; faces without area are left out (they have no
   // side). Once, by the first caller (folds() calls it, from any thread); nothing to do
@@ -50,8 +69,9 @@ class InputSurface {
   // slack relative to the distance and to x's magnitude (a denormal-scale cube's ties, the
   // fuzzer's), for every fold question that asks ties again.
   static double tie_reach2(double d2, Vec3 x) { return d2 * (1 + 1e-6) + 1e-24 * dot(x, x); }
-  bool nearest(Vec3 x, const Evaluator& eval, double& d2, Vec3& normal,
-               size_t* hint = nullptr) const;
+  // `normal` as written when the asking triangle is `turned` (keep()).
+  bool nearest(Vec3 x, const Evaluator& eval, double& d2, Vec3& normal, size_t* hint = nullptr,
+               bool turned = false) const;
 
   // Whether some new triangle of the patch turns more than 90 degrees from the input face
   // nearest one of its sample points (its centroid and halfway from there to each corner; on
@@ -60,13 +80,16 @@ class InputSurface {
   // faces are nearest (an edge, a crease), one agreeing is enough.
   // Triangles covering fewer than `min_covers` input faces (by area) are not asked, and the
   // grid's side is at most `max_side` (2: the four points).
+  // `turned`: bit t set for each new triangle the run holds reversed from how it will be
+  // written (keep()'s `turned`; 0 for none).
   bool folds(const Patch& patch, const Evaluator& eval, double min_covers = 0,
-             int max_side = kGridMax) const;
+             int max_side = kGridMax, uint64_t turned = 0) const;
   // The area of the patch's new triangles of at least `min_area` that turns more than 90
   // degrees from the input face nearest it, each point of a grid like folds()'s standing for
   // its sub-triangle; counted until it passes `budget` (then a value past it).
-  double folded_area(const Patch& patch, const Evaluator& eval, double min_area,
-                     double budget) const;
+  double folded_area(const Patch& patch, const Evaluator& eval, double min_area, double budget,
+                     uint64_t turned = 0) const;
+  static constexpr int kGridMax = 12; // the sample grid's cells a side at most
   // The grid's cells a side (each_grid_point's L) for a triangle covering `covers` input
   // faces (by area): 2 to max_side, growing with the square root.
   static int grid_side(double covers, int max_side = kGridMax);
@@ -83,8 +106,7 @@ class InputSurface {
 
  private:
   static constexpr int kLeaf = 4;
-  static constexpr double kGridPerSide = 0.75; // grid cells along a side per sqrt(faces covered)
-  static constexpr int kGridMax = 12;
+  static constexpr double kGridPerSide = 0.75;  // grid cells along a side per sqrt(faces covered)
   static constexpr double kCellsPerBudget = 4;  // folded_area's grid: cells per budget's area
   static constexpr double kBulkSpan = 16;       // see clamp_to_bulk
   static constexpr double kCutAt = 4;           // cut_long_faces: box's middle extent / height
@@ -137,17 +159,21 @@ class InputSurface {
   // search answers as before.
   void cut_long_faces(const Evaluator& eval) const;
   // Whether any face within sqrt(r2) of x has a normal with a positive dot product with n.
-  bool any_agrees(Vec3 x, double r2, Vec3 n, const Evaluator& eval) const;
+  // `turned`: the asking triangle's orientation (keep()), in these three.
+  bool any_agrees(Vec3 x, double r2, Vec3 n, const Evaluator& eval, bool turned) const;
   // Whether a triangle facing n turns from the input at its point x, ties answered by any
   // agreeing face; `hint` as nearest()'s.
-  bool turned_at(Vec3 x, Vec3 n, const Evaluator& eval, size_t& hint) const;
-  Vec3 face_normal(size_t f, const Evaluator& eval) const;
+  bool turned_at(Vec3 x, Vec3 n, const Evaluator& eval, size_t& hint, bool turned) const;
+  // Face f's unit normal, reversed when f and the asking triangle are held in different
+  // orientations: the two compared as written.
+  Vec3 face_normal(size_t f, const Evaluator& eval, bool turned) const;
 
   // Writes the mutable members below: const because the hierarchy is built on first use,
   // under build_once_, before any reader sees them.
   void build_now(const Evaluator& eval) const;
   mutable std::once_flag build_once_;
   mutable UninitVector<uint32_t> tris_;  // 3 a face, faces with area only
+  mutable std::vector<uint8_t> turned_;  // a byte a face of tris_, or empty (keep())
   mutable double mean_area_ = 0;         // of the input's faces with area
   mutable UninitVector<uint32_t> items_; // a face (< faces), or faces + its index in pieces_
   mutable std::vector<Piece> pieces_;

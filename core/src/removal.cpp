@@ -53,14 +53,22 @@ bool star_direction(uint32_t v, const Ring& ring, const Evaluator& eval, Vec3& o
   return false;
 }
 
-bool Planner::large_triangles_fold(const Patch& patch) const {
+uint64_t Planner::turned_triangles(const Ring& ring, const Patch& patch) const {
+  uint64_t turned = 0;
+  if (turned_.any())
+    for (int t = 0; t < patch.count; ++t)
+      turned |= uint64_t(turned_(ring.f[patch.from[t][0]])) << t;
+  return turned;
+}
+
+bool Planner::large_triangles_fold(const Patch& patch, uint64_t turned) const {
   const double twice = 2 * limits_->large_triangle_area; // the cross product's length
   for (int t = 0; t < patch.count; ++t) {
     const auto& tri = patch.tri[t];
     const Vec3 a = patch.q[tri[0]];
     if (length(cross(patch.q[tri[1]] - a, patch.q[tri[2]] - a)) >= twice)
-      return input_->folded_area(patch, *eval_, limits_->large_triangle_area,
-                                 limits_->fold_budget) > limits_->fold_budget;
+      return input_->folded_area(patch, *eval_, limits_->large_triangle_area, limits_->fold_budget,
+                                 turned) > limits_->fold_budget;
   }
   return false;
 }
@@ -97,10 +105,11 @@ Reject Planner::plan(uint32_t v, const Ring& ring, Vec3 n, Patch& out, double& c
     // lost more to the error than they gained (bench/ablation.md, 2026-11-29).
     if (why == RejectCount && check_topology && input_) {
       const bool eased = limits_->folds_judged_by_input; // the vetoes eased, the input kept
-      const bool folds = eased ? input_->folds(out, *eval_)
-                               : (out.corner_doubts &&
-                                  input_->folds(out, *eval_, kInputCheckCovers, kInputCheckSide)) ||
-                                     large_triangles_fold(out);
+      const uint64_t turned = turned_triangles(ring, out);
+      const bool folds = eased ? input_->folds(out, *eval_, 0, InputSurface::kGridMax, turned)
+                               : (out.corner_doubts && input_->folds(out, *eval_, kInputCheckCovers,
+                                                                     kInputCheckSide, turned)) ||
+                                     large_triangles_fold(out, turned);
       if (folds) why = RejectFoldOver;
     }
     // A seam's sides are bounded together, by plan_seam.

@@ -80,14 +80,19 @@ class Planner {
   // corners' normals are unsure, at most kInputCheckSide grid cells a side, and, whatever
   // their corners, those of limits.large_triangle_area, refused past limits.fold_budget of
   // folded area. nullptr: not.
-  void set_input(const InputSurface* input) { input_ = input; }
+  void set_input(const InputSurface* input, TurnedSlots turned = {}) {
+    input_ = input;
+    turned_ = turned;
+  }
   static constexpr double kInputCheckCovers = 8.0;
   static constexpr int kInputCheckSide = 2;
 
  private:
   // Whether the patch's triangles of limits.large_triangle_area fold over more than
   // limits.fold_budget of area (none that large: false, the input not asked).
-  bool large_triangles_fold(const Patch& patch) const;
+  bool large_triangles_fold(const Patch& patch, uint64_t turned) const;
+  // InputSurface::folds's `turned` for the patch's triangles (each as its first corner's face).
+  uint64_t turned_triangles(const Ring& ring, const Patch& patch) const;
   const Evaluator* eval_;
   const Topology* topo_;
   const uint32_t* tris_;
@@ -98,6 +103,7 @@ class Planner {
   const float* face_bound_ = nullptr;
   const CarriedPoints* carried_ = nullptr;
   const InputSurface* input_ = nullptr;
+  TurnedSlots turned_;
 };
 
 } // namespace vrs

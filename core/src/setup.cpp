@@ -385,8 +385,15 @@ void Simplifier::prepare() {
   // Not when the target is asked at any cost (max_price_jump 0): the eased passes then fold
   // where nothing else reaches it, as before. The hierarchy is built when a plan first asks.
   if (opt_.against_input && opt_.relax_to_reach_target && opt_.max_price_jump > 0) {
-    input_.keep(t, &workers_);
-    planner_.set_input(&input_);
+    const TurnedSlots turned{&turned_, &corner_source_};
+    std::vector<uint8_t> by_slot;
+    if (turned.any()) {
+      by_slot.resize(t.size() / 3);
+      for (size_t f = 0; f < by_slot.size(); ++f)
+        by_slot[f] = turned(uint32_t(f));
+    }
+    input_.keep(t, std::move(by_slot), &workers_);
+    planner_.set_input(&input_, turned);
   }
 }
 

@@ -244,6 +244,38 @@ TEST(InputSurface, CoarseRunsDoNotTurnFacesAgainstTheInputNearestThem) {
   }
 }
 
+// Faces the run holds reversed from how they were written (pieces written in different
+// orientations, welded) are compared as written: over a sheet the run holds facing up but
+// whose faces were written facing down, a new triangle facing up folds if it will be written
+// as it stands, and agrees if it will be written turned too.
+TEST(InputSurface, FacesHeldReversedAreJudgedAsWritten) {
+  const vrs::Mesh sheet = vrs_test::grid(8);
+  const vrs::Evaluator eval = evaluator(sheet);
+  const vrs::Patch up = patch_of({1, 1, 0.1}, {6, 1, 0.1}, {1, 6, 0.1});
+  vrs::InputSurface as_run;
+  as_run.keep(sheet.triangles);
+  EXPECT_FALSE(as_run.folds(up, eval));
+  vrs::InputSurface written_down;
+  written_down.keep(sheet.triangles, std::vector<uint8_t>(sheet.face_count(), 1));
+  EXPECT_TRUE(written_down.folds(up, eval)) << "written as it stands: against the sheet";
+  EXPECT_FALSE(written_down.folds(up, eval, 0, vrs::InputSurface::kGridMax, 1));
+  EXPECT_GT(written_down.folded_area(up, eval, 0, 1e9), 12.0); // its area, 12.5
+  EXPECT_EQ(written_down.folded_area(up, eval, 0, 1e9, 1), 0.0);
+  // Half the sheet written down (x < 4): a triangle written as it stands folds over that half.
+  std::vector<uint8_t> half(sheet.face_count());
+  for (size_t f = 0; f < half.size(); ++f)
+    half[f] = sheet.positions[3 * sheet.triangles[3 * f]] +
+                  sheet.positions[3 * sheet.triangles[3 * f + 1]] +
+                  sheet.positions[3 * sheet.triangles[3 * f + 2]] <
+              12;
+  vrs::InputSurface halves;
+  halves.keep(sheet.triangles, half);
+  const vrs::Patch left = patch_of({0.5, 1, 0.1}, {3.5, 1, 0.1}, {0.5, 6, 0.1});
+  const vrs::Patch right = patch_of({4.5, 1, 0.1}, {7.5, 1, 0.1}, {4.5, 6, 0.1});
+  EXPECT_TRUE(halves.folds(left, eval));
+  EXPECT_FALSE(halves.folds(right, eval));
+}
+
 // A triangle over many input faces is sampled on a grid, not at four points only: over a
 // flat sheet of 3200 faces facing up, one large triangle facing up agrees with it, until a
 // small patch facing down hangs just above one of its corners (nearer there than the sheet),
