@@ -29,6 +29,15 @@ struct TurnedSlots {
   bool operator()(uint32_t slot) const {
     return (*by_input_face)[(*corner_source)[3 * size_t(slot)] / 3];
   }
+  // InputSurface::folds's `turned` for `count` new triangles, triangle t standing where face
+  // slot `slot_of(t)` did.
+  template <class SlotOf> uint64_t triangles(int count, SlotOf slot_of) const {
+    uint64_t turned = 0;
+    if (any())
+      for (int t = 0; t < count; ++t)
+        turned |= uint64_t((*this)(slot_of(t))) << t;
+    return turned;
+  }
 };
 
 class InputSurface {

@@ -53,14 +53,6 @@ bool star_direction(uint32_t v, const Ring& ring, const Evaluator& eval, Vec3& o
   return false;
 }
 
-uint64_t Planner::turned_triangles(const Ring& ring, const Patch& patch) const {
-  uint64_t turned = 0;
-  if (turned_.any())
-    for (int t = 0; t < patch.count; ++t)
-      turned |= uint64_t(turned_(ring.f[patch.from[t][0]])) << t;
-  return turned;
-}
-
 bool Planner::large_triangles_fold(const Patch& patch, uint64_t turned) const {
   const double twice = 2 * limits_->large_triangle_area; // the cross product's length
   for (int t = 0; t < patch.count; ++t) {
@@ -105,7 +97,9 @@ Reject Planner::plan(uint32_t v, const Ring& ring, Vec3 n, Patch& out, double& c
     // lost more to the error than they gained (bench/ablation.md, 2026-11-29).
     if (why == RejectCount && check_topology && input_) {
       const bool eased = limits_->folds_judged_by_input; // the vetoes eased, the input kept
-      const uint64_t turned = turned_triangles(ring, out);
+      // Each new triangle as its first corner's face (the output writes it so).
+      const uint64_t turned =
+          turned_.triangles(out.count, [&](int t) { return ring.f[out.from[t][0]]; });
       const bool folds = eased ? input_->folds(out, *eval_, 0, InputSurface::kGridMax, turned)
                                : (out.corner_doubts && input_->folds(out, *eval_, kInputCheckCovers,
                                                                      kInputCheckSide, turned)) ||

@@ -91,8 +91,6 @@ class Planner {
   // Whether the patch's triangles of limits.large_triangle_area fold over more than
   // limits.fold_budget of area (none that large: false, the input not asked).
   bool large_triangles_fold(const Patch& patch, uint64_t turned) const;
-  // InputSurface::folds's `turned` for the patch's triangles (each as its first corner's face).
-  uint64_t turned_triangles(const Ring& ring, const Patch& patch) const;
   const Evaluator* eval_;
   const Topology* topo_;
   const uint32_t* tris_;

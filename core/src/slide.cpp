@@ -270,10 +270,9 @@ uint32_t Simplifier::slide_choice(uint32_t v, const Ring& ring) const {
     // local face), as a removal's plan is: threaded-short at 10 % folded 0.1 % more of its
     // area without it. Only where the run built its hierarchy (the CAD parts, where those
     // fans are): elsewhere refused, as building it would take 16 bytes a face at the peak.
-    uint64_t turned = 0; // the fan's triangle i stands where ring face i did
-    if (const TurnedSlots slots{&turned_, &corner_source_}; slots.any())
-      for (int i = 0; i < ring.faces; ++i)
-        turned |= uint64_t(slots(ring.f[i])) << i;
+    // The fan's triangle i stands where ring face i did.
+    const uint64_t turned = TurnedSlots{&turned_, &corner_source_}.triangles(
+        ring.faces, [&](int i) { return ring.f[i]; });
     if (!folds && doubts)
       folds = !slide_whole_input_ || input_.folds(trial, eval_, 0, InputSurface::kGridMax, turned);
     if (folds) chosen = kNone;
