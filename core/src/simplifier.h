@@ -69,9 +69,6 @@ class Simplifier {
   void slide_index(const std::vector<uint32_t>& fans);
   uint32_t slide_choice(uint32_t v, const Ring& ring) const;
   void slide_commit(uint32_t v, uint32_t u, const Ring& ring);
-  double slide_in(uint32_t v, uint32_t u, const Ring& ring, const Patch& patch,
-                  double* farthest = nullptr,
-                  double stop = std::numeric_limits<double>::infinity()) const;
   bool slide_local(uint32_t v, const Ring& ring, LocalInput& in) const;
   int slide_slot(uint32_t v) const { // -1: none
     const uint64_t word = slide_bits_[v >> 6], bit = uint64_t(1) << (v & 63);

@@ -90,6 +90,32 @@ class FanBounds {
   int hint_ = 0;
 };
 
+// A point a fan answers for: v or a point its faces carry, standing for a third of its input
+// faces' area. Gathered once a fan, read by each place tried (not found again in the carried
+// lists and the slots for every one).
+struct SlidePoint {
+  Vec3 x;
+  double area;
+  uint32_t id;
+};
+
+// Input to fan: the sum of the points' distances to it by their areas, but u's (u itself lies
+// on it). Past `stop` the sum is no use to the caller: the rest is not measured (every term is
+// positive, so what is returned still exceeds it). `farthest`: the largest squared distance.
+double slide_in(const std::vector<SlidePoint>& points, uint32_t u, const Patch& patch,
+                double* farthest = nullptr, double stop = std::numeric_limits<double>::infinity()) {
+  double in = 0;
+  FanBounds fan(patch);
+  for (const SlidePoint& p : points) {
+    if (in > stop) break;
+    if (p.id == u) continue;
+    const double d2 = fan.nearest2(p.x);
+    in += p.area * std::sqrt(d2);
+    if (farthest) *farthest = std::max(*farthest, d2);
+  }
+  return in;
+}
+
 } // namespace
 
 bool Simplifier::slide_local(uint32_t v, const Ring& ring, LocalInput& in) const {
@@ -129,25 +155,6 @@ bool Simplifier::slide_local(uint32_t v, const Ring& ring, LocalInput& in) const
   return true;
 }
 
-double Simplifier::slide_in(uint32_t v, uint32_t u, const Ring& ring, const Patch& patch,
-                            double* farthest, double stop) const {
-  // Input to fan: the removed vertices the ring's faces carry, and v (u itself lies on it),
-  // each standing for a third of its input faces' area. Past `stop` the sum is no use to the
-  // caller: the rest is not measured (every term is positive, so what is returned still
-  // exceeds it).
-  double in = 0;
-  FanBounds fan(patch);
-  auto add = [&](uint32_t p) {
-    if (p == u || in > stop) return;
-    const double d2 = fan.nearest2(eval_.position(p));
-    in += slide_area(p) * std::sqrt(d2);
-    if (farthest) *farthest = std::max(*farthest, d2);
-  };
-  add(v);
-  carried_.for_each(ring, add);
-  return in;
-}
-
 uint32_t Simplifier::slide_choice(uint32_t v, const Ring& ring) const {
   const int k = ring.verts;
   Patch now;
@@ -155,18 +162,21 @@ uint32_t Simplifier::slide_choice(uint32_t v, const Ring& ring) const {
   std::array<Vec3, kMaxRing> old_n;
   for (int i = 0; i < k; ++i)
     old_n[i] = cross(now.q[(i + 1) % k] - now.q[i], now.q[k] - now.q[i]);
+  thread_local std::vector<SlidePoint> points; // v first, then the carried points
+  points.clear();
+  auto gather = [&](uint32_t p) { points.push_back({eval_.position(p), slide_area(p), p}); };
+  gather(v);
+  carried_.for_each(ring, gather);
   // The input's planes around (each carried point's, and v's: its input normal, weighted by
   // its area) rank the carried points as places for the fan's apex, cheaply, as a quadric
   // would; the few best are measured.
   std::array<Plane, 256> planes;
   int np = 0;
-  auto plane_of = [&](uint32_t p) {
-    if (np == int(planes.size())) return;
-    const float* c = &normals_[4 * size_t(p)];
-    planes[np++] = {Vec3{c[0], c[1], c[2]}, eval_.position(p), slide_area(p)};
-  };
-  plane_of(v);
-  carried_.for_each(ring, plane_of);
+  for (const SlidePoint& p : points) {
+    if (np == int(planes.size())) break;
+    const float* c = &normals_[4 * size_t(p.id)];
+    planes[np++] = {Vec3{c[0], c[1], c[2]}, p.x, p.area};
+  }
   auto quadric = [&](Vec3 x) {
     double q = 0;
     for (int i = 0; i < np; ++i) {
@@ -177,21 +187,22 @@ uint32_t Simplifier::slide_choice(uint32_t v, const Ring& ring) const {
   };
   std::array<std::pair<double, uint32_t>, kSlideTries> tries;
   int tried = 0;
-  carried_.for_each(ring, [&](uint32_t u) {
-    if ((flags_[u] & kFlagLocked) || !slide_target_[u]) return;
+  for (auto p = points.begin() + 1; p != points.end(); ++p) {
+    const uint32_t u = p->id;
+    if ((flags_[u] & kFlagLocked) || !slide_target_[u]) continue;
     // Its per-corner data must come from a face wound as the fan's (an orientation border is
     // a constrained edge, but a point can be handed across one by a removal along it).
     if (!turned_.empty() && !corner_source_.empty() &&
         turned_[slide_corner_[u] / 3] != turned_[corner_source_[3 * size_t(ring.f[0])] / 3])
-      return;
-    const std::pair<double, uint32_t> e{quadric(eval_.position(u)), u};
+      continue;
+    const std::pair<double, uint32_t> e{quadric(p->x), u};
     if (tried < kSlideTries) {
       tries[tried++] = e;
     } else {
       auto worst = std::max_element(tries.begin(), tries.end());
       if (e < *worst) *worst = e;
     }
-  });
+  }
   if (tried == 0) return kNone;
   // The few nearest the input's points first (cheap), then the surface both ways. Each new
   // face answers to the vetoes a removal's fillings do, uneased (no sliver, its corners'
@@ -204,6 +215,7 @@ uint32_t Simplifier::slide_choice(uint32_t v, const Ring& ring) const {
     double in;
     uint32_t u;
     uint8_t doubts; // veto_triangle's: corners unsure of the side the input faces
+    double far;     // squared: the farthest of the input's points from the fan
     bool operator<(const Near& o) const { return in != o.in ? in < o.in : u < o.u; }
   };
   std::array<Near, kSlideTries> near;
@@ -230,8 +242,9 @@ uint32_t Simplifier::slide_choice(uint32_t v, const Ring& ring) const {
       std::nth_element(near.begin(), near.begin() + (kSlideMeasured - 1), near.begin() + nears);
       stop = near[kSlideMeasured - 1].in;
     }
-    const double in = slide_in(v, u, ring, trial, nullptr, stop);
-    if (in <= stop) near[nears++] = {in, u, doubts};
+    double far = 0;
+    const double in = slide_in(points, u, trial, &far, stop);
+    if (in <= stop) near[nears++] = {in, u, doubts, far}; // measured whole, so far is too
   }
   if (nears == 0) return kNone;
   std::sort(near.begin(), near.begin() + nears);
@@ -239,7 +252,7 @@ uint32_t Simplifier::slide_choice(uint32_t v, const Ring& ring) const {
   if (!slide_local(v, ring, local)) return kNone;
   bool folds;
   double far_now = 0; // squared: the farthest either way now, which no slide may pass
-  const double in_now = slide_in(v, kNone, ring, now, &far_now);
+  const double in_now = slide_in(points, kNone, now, &far_now);
   double best = std::numeric_limits<double>::infinity();
   uint32_t chosen = kNone;
   uint8_t doubts = 0;
@@ -257,8 +270,7 @@ uint32_t Simplifier::slide_choice(uint32_t v, const Ring& ring) const {
     if (!(s < best) || folds) continue;
     // The mean nearer, not the max farther: unbounded, the whole set's max-error ratio to
     // QECD went from a clamped gmean of 0.493 to 0.508 (p90 1.29 -> 1.36).
-    slide_in(v, u, ring, trial, &far);
-    if (far > far_now) continue;
+    if (std::max(far, near[ni].far) > far_now) continue;
     best = s;
     chosen = u;
     doubts = near[ni].doubts;
