@@ -385,7 +385,11 @@ Vec3 InputSurface::face_normal(size_t f, const Evaluator& eval, bool turned) con
   return !turned_.empty() && bool(turned_[f]) != turned ? n * -1.0 : n;
 }
 
-bool InputSurface::any_agrees(Vec3 x, double r2, Vec3 n, const Evaluator& eval, bool turned) const {
+bool InputSurface::ties_agree(Vec3 x, double r2, Vec3 n, const Evaluator& eval, bool turned) const {
+  Vec3 sum{0, 0, 0};
+  // A long face is in the hierarchy in pieces (cut_long_faces): summed once.
+  std::array<size_t, 16> seen;
+  size_t seens = 0;
   std::array<std::pair<uint8_t, uint32_t>, 64> stack;
   int top = 0;
   stack[top++] = {uint8_t(levels_.size() - 1), 0u};
@@ -396,29 +400,33 @@ bool InputSurface::any_agrees(Vec3 x, double r2, Vec3 n, const Evaluator& eval, 
       const auto [first, last] = items_under(level, index);
       for (size_t i = first; i < last; ++i)
         if (const size_t f = item_face(i);
-            dot(face_normal(f, eval, turned), n) > 0 &&
             point_triangle_distance2(x, eval.position(tris_[3 * f]),
                                      eval.position(tris_[3 * f + 1]),
-                                     eval.position(tris_[3 * f + 2])) <= r2)
-          return true;
+                                     eval.position(tris_[3 * f + 2])) <= r2) {
+          const Vec3 m = face_normal(f, eval, turned);
+          if (dot(m, n) > kAgreeAlone) return true;
+          if (std::find(seen.begin(), seen.begin() + seens, f) != seen.begin() + seens) continue;
+          if (seens < seen.size()) seen[seens++] = f;
+          sum = sum + m;
+        }
       continue;
     }
     const size_t below = node_count(level - 1);
     if (2 * index + 1 < below) stack[top++] = {uint8_t(level - 1), 2 * index + 1};
     stack[top++] = {uint8_t(level - 1), 2 * index};
   }
-  return false;
+  return dot(sum, n) > 0;
 }
 
 bool InputSurface::turned_at(Vec3 x, Vec3 n, const Evaluator& eval, size_t& hint,
                              bool turned) const {
   double d2;
   Vec3 nearest_normal;
-  if (!nearest(x, eval, d2, nearest_normal, &hint, turned) || dot(nearest_normal, n) > 0)
+  if (!nearest(x, eval, d2, nearest_normal, &hint, turned) || dot(nearest_normal, n) > kAgreeAlone)
     return false;
   // Ties (an input edge or crease nearest): measured again with a hair of slack, relative
   // to the point's magnitude (an absolute one took in the whole of a cube 2e-41 wide).
-  return !any_agrees(x, tie_reach2(d2, x), n, eval, turned);
+  return !ties_agree(x, tie_reach2(d2, x), n, eval, turned);
 }
 
 int InputSurface::grid_side(double covers, int max_side) {

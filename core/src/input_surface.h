@@ -78,6 +78,13 @@ class InputSurface {
   // slack relative to the distance and to x's magnitude (a denormal-scale cube's ties, the
   // fuzzer's), for every fold question that asks ties again.
   static double tie_reach2(double d2, Vec3 x) { return d2 * (1 + 1e-6) + 1e-24 * dot(x, x); }
+  // A point agrees with the input where a face as near as the nearest (within tie_reach2)
+  // turns less than 60 degrees from the triangle (this dot product of unit normals), or where
+  // those faces' normals summed turn less than 90 degrees from it: the same answer whichever
+  // of them a search meets first. The benchmark takes one of the nearest: "any of them turns
+  // less than 90 degrees" let fins stand across a ridge, near 90 degrees from both flanks
+  // (Wuson at 1 %: 1.03 % of the area folded); a face along one side of a crease agrees.
+  static constexpr double kAgreeAlone = 0.5;
   // `normal` as written when the asking triangle is `turned` (keep()).
   bool nearest(Vec3 x, const Evaluator& eval, double& d2, Vec3& normal, size_t* hint = nullptr,
                bool turned = false) const;
@@ -86,7 +93,7 @@ class InputSurface {
   // nearest one of its sample points (its centroid and halfway from there to each corner; on
   // a triangle over more input faces, about a point every two faces covered, up to 144):
   // a fold-over as the benchmark measures one, against the input itself. Where several input
-  // faces are nearest (an edge, a crease), one agreeing is enough.
+  // faces are nearest (an edge, a crease), as kAgreeAlone says.
   // Triangles covering fewer than `min_covers` input faces (by area) are not asked, and the
   // grid's side is at most `max_side` (2: the four points).
   // `turned`: bit t set for each new triangle the run holds reversed from how it will be
@@ -167,11 +174,11 @@ class InputSurface {
   // the box of its part; a face's nearest point lies in one of its pieces' boxes, so every
   // search answers as before.
   void cut_long_faces(const Evaluator& eval) const;
-  // Whether any face within sqrt(r2) of x has a normal with a positive dot product with n.
+  // Whether the faces within sqrt(r2) of x agree with a triangle facing n (kAgreeAlone).
   // `turned`: the asking triangle's orientation (keep()), in these three.
-  bool any_agrees(Vec3 x, double r2, Vec3 n, const Evaluator& eval, bool turned) const;
-  // Whether a triangle facing n turns from the input at its point x, ties answered by any
-  // agreeing face; `hint` as nearest()'s.
+  bool ties_agree(Vec3 x, double r2, Vec3 n, const Evaluator& eval, bool turned) const;
+  // Whether a triangle facing n turns from the input at its point x, ties answered as
+  // kAgreeAlone says; `hint` as nearest()'s.
   bool turned_at(Vec3 x, Vec3 n, const Evaluator& eval, size_t& hint, bool turned) const;
   // Face f's unit normal, reversed when f and the asking triangle are held in different
   // orientations: the two compared as written.

@@ -29,8 +29,9 @@ struct LocalInput {
 
 // A fan against the input around it: an L x L grid of each triangle's points, each against
 // its nearest local input face, by area (the mean distance times the area; past `stop` the
-// rest is not measured). `folds`: some point's nearest faces (within a tie's slack) all turn
-// more than 90 degrees from its triangle, as the benchmark counts a fold-over. `fine`: L grows
+// rest is not measured). `folds`: some point turns from the input as InputSurface::turned_at
+// judges it (its nearest face, or the sum of those as near: kAgreeAlone), as the benchmark
+// counts a fold-over. `fine`: L grows
 // with the input faces a triangle covers, as InputSurface::folds's grid. `farthest`: the
 // largest squared distance met.
 double measure_against(const Patch& patch, LocalInput& in, bool& folds,

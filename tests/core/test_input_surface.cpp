@@ -212,6 +212,26 @@ TEST(InputSurface, FoldsIsATriangleTurnedAgainstTheInputFaceNearestIt) {
   EXPECT_FALSE(input.folds(patch_of({1, 1, low}, {2, 3, low}, {3, 1, low}), eval));
 }
 
+// A fin standing on the crest of a shallow ridge (flanks 11 degrees either way), leaning 5
+// degrees: every point of it is nearest the crest, as near to both flanks, and the benchmark
+// takes one of them. Wound one way it turns 84 degrees from one flank and 107 from the other:
+// "any of the nearest agreeing" let it through, the benchmark counts half of it folded; a
+// fold-over now (the flanks summed stand past 90 degrees from it). Wound the other way it
+// leans with them and agrees; so does a triangle on one flank, or a bevel under the crest.
+TEST(InputSurface, AFinOnARidgeIsAFoldOver) {
+  vrs::Mesh ridge = vrs_test::grid(8);
+  for (size_t v = 0; v < ridge.vertex_count(); ++v)
+    ridge.positions[3 * v + 2] = 1.0f - 0.2f * std::abs(ridge.positions[3 * v] - 4.0f);
+  const vrs::Evaluator eval = evaluator(ridge);
+  vrs::InputSurface input;
+  input.keep(ridge.triangles);
+  const Vec3 a{4, 2, 1}, b{4, 6, 1}, apex{4 + 0.5 * std::tan(5 * M_PI / 180), 4, 1.5};
+  EXPECT_TRUE(input.folds(patch_of(a, b, apex), eval));
+  EXPECT_FALSE(input.folds(patch_of(a, apex, b), eval));
+  EXPECT_FALSE(input.folds(patch_of({1, 2, 0.4}, {3, 2, 0.8}, {2, 5, 0.6}), eval));
+  EXPECT_FALSE(input.folds(patch_of({3, 2, 0.8}, {5, 2, 0.8}, {4, 5, 0.8}), eval));
+}
+
 // The normal passes ask only triangles over a few input faces (min_covers): a small triangle
 // turned over is let through there, and refused when every triangle is asked. The hierarchy
 // is built by the first question, without build().

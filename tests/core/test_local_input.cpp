@@ -90,11 +90,16 @@ double brute_measure(const vrs::Patch& patch, const vrs::LocalInput& in, bool& f
         best = std::min(best, d2[f] = vrs::point_triangle_distance2(x, in.a[f], in.b[f], in.c[f]));
       out += w / (L * L) * std::sqrt(best);
       farthest = std::max(farthest, best);
+      // Every face as near: one within 60 degrees, or their normals summed within 90.
       const double tie = vrs::InputSurface::tie_reach2(best, x);
-      bool agrees = false;
+      bool near60 = false;
+      Vec3 sum{0, 0, 0};
       for (int f = 0; f < in.count; ++f)
-        agrees = agrees || (d2[f] <= tie && vrs::dot(in.n[f], nt) > 0);
-      folds = folds || !agrees;
+        if (d2[f] <= tie) {
+          near60 = near60 || vrs::dot(in.n[f], nt) > vrs::InputSurface::kAgreeAlone * 2 * w;
+          sum = sum + in.n[f];
+        }
+      folds = folds || !(near60 || vrs::dot(sum, nt) > 0);
       return false;
     });
   }
@@ -148,6 +153,31 @@ TEST(LocalInput, MeasuresAsReadingEveryFaceDoesOnABumpyInput) {
   // Both answers occur, or the comparison proves little.
   EXPECT_GT(folded, 0);
   EXPECT_LT(folded, measured);
+}
+
+// The fin of InputSurface.AFinOnARidgeIsAFoldOver, asked of the input around it: the slide
+// judges it as the run's plans do.
+TEST(LocalInput, AFinOnARidgeIsAFoldOver) {
+  vrs::LocalInput in;
+  set_faces(in, grid(8, [](int i, int) { return 1.0 - 0.2 * std::abs(i - 4); }));
+  auto one = [](Vec3 a, Vec3 b, Vec3 c) {
+    vrs::Patch p;
+    p.count = 1;
+    p.tri[0] = {0, 1, 2};
+    p.q[0] = a, p.q[1] = b, p.q[2] = c;
+    return p;
+  };
+  const Vec3 a{4, 2, 1}, b{4, 6, 1}, apex{4 + 0.5 * std::tan(5 * M_PI / 180), 4, 1.5};
+  for (const auto& [patch, folded] : {std::pair{one(a, b, apex), true},
+                                      {one(a, apex, b), false},
+                                      {one({1, 2, 0.4}, {3, 2, 0.8}, {2, 5, 0.6}), false}}) {
+    bool folds = !folded, folds_ref = !folded;
+    double far = 0, far_ref = 0;
+    vrs::measure_against(patch, in, folds, HUGE_VAL, false, &far);
+    brute_measure(patch, in, folds_ref, far_ref);
+    EXPECT_EQ(folds, folded);
+    EXPECT_EQ(folds_ref, folded);
+  }
 }
 
 } // namespace
