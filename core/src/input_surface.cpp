@@ -386,7 +386,7 @@ Vec3 InputSurface::face_normal(size_t f, const Evaluator& eval, bool turned) con
 }
 
 bool InputSurface::ties_agree(Vec3 x, double r2, Vec3 n, const Evaluator& eval, bool turned) const {
-  Vec3 sum{0, 0, 0};
+  TieVote vote(n, 1);
   // A long face is in the hierarchy in pieces (cut_long_faces): summed once.
   std::array<size_t, 16> seen;
   size_t seens = 0;
@@ -404,10 +404,10 @@ bool InputSurface::ties_agree(Vec3 x, double r2, Vec3 n, const Evaluator& eval, 
                                      eval.position(tris_[3 * f + 1]),
                                      eval.position(tris_[3 * f + 2])) <= r2) {
           const Vec3 m = face_normal(f, eval, turned);
-          if (dot(m, n) > kAgreeAlone) return true;
+          if (vote.alone(m)) return true;
           if (std::find(seen.begin(), seen.begin() + seens, f) != seen.begin() + seens) continue;
           if (seens < seen.size()) seen[seens++] = f;
-          sum = sum + m;
+          vote.add(m);
         }
       continue;
     }
@@ -415,14 +415,14 @@ bool InputSurface::ties_agree(Vec3 x, double r2, Vec3 n, const Evaluator& eval, 
     if (2 * index + 1 < below) stack[top++] = {uint8_t(level - 1), 2 * index + 1};
     stack[top++] = {uint8_t(level - 1), 2 * index};
   }
-  return dot(sum, n) > 0;
+  return vote.summed();
 }
 
 bool InputSurface::turned_at(Vec3 x, Vec3 n, const Evaluator& eval, size_t& hint,
                              bool turned) const {
   double d2;
   Vec3 nearest_normal;
-  if (!nearest(x, eval, d2, nearest_normal, &hint, turned) || dot(nearest_normal, n) > kAgreeAlone)
+  if (!nearest(x, eval, d2, nearest_normal, &hint, turned) || TieVote(n, 1).alone(nearest_normal))
     return false;
   // Ties (an input edge or crease nearest): measured again with a hair of slack, relative
   // to the point's magnitude (an absolute one took in the whole of a cube 2e-41 wide).

@@ -25,7 +25,9 @@ namespace vrs {
 struct TurnedSlots {
   const std::vector<uint8_t>* by_input_face = nullptr; // nullptr or empty: none
   const std::vector<uint32_t>* corner_source = nullptr;
-  bool any() const { return by_input_face && !by_input_face->empty(); }
+  bool any() const {
+    return by_input_face && !by_input_face->empty() && corner_source && !corner_source->empty();
+  }
   bool operator()(uint32_t slot) const {
     return (*by_input_face)[(*corner_source)[3 * size_t(slot)] / 3];
   }
@@ -85,6 +87,19 @@ class InputSurface {
   // less than 90 degrees" let fins stand across a ridge, near 90 degrees from both flanks
   // (Wuson at 1 %: 1.03 % of the area folded); a face along one side of a crease agrees.
   static constexpr double kAgreeAlone = 0.5;
+  // That question, one tied face at a time, for a triangle facing n (of length `length`).
+  class TieVote {
+   public:
+    TieVote(Vec3 n, double length) : n_(n), alone_(kAgreeAlone * length) {}
+    // Whether a face of unit normal m agrees on its own (then the ties do, whatever else).
+    bool alone(Vec3 m) const { return dot(m, n_) > alone_; }
+    void add(Vec3 m) { sum_ = sum_ + m; }
+    bool summed() const { return dot(sum_, n_) > 0; }
+
+   private:
+    Vec3 n_, sum_{0, 0, 0};
+    double alone_;
+  };
   // `normal` as written when the asking triangle is `turned` (keep()).
   bool nearest(Vec3 x, const Evaluator& eval, double& d2, Vec3& normal, size_t* hint = nullptr,
                bool turned = false) const;

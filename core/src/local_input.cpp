@@ -99,25 +99,24 @@ double measure_against(const Patch& patch, LocalInput& in, bool& folds, double s
       }
       out += w / (L * L) * s;
       if (farthest) *farthest = std::max(*farthest, best);
-      // As InputSurface::turned_at asks (kAgreeAlone); nt is not of unit length.
-      bool agrees = dot(in.n[hint], nt) > InputSurface::kAgreeAlone * 2 * w;
+      // As InputSurface::turned_at asks (kAgreeAlone); nt is of length 2 w.
+      InputSurface::TieVote vote(nt, 2 * w);
+      bool agrees = vote.alone(in.n[hint]);
       if (!agrees) {
         const double tie = InputSurface::tie_reach2(best, x);
         const double tie_s = std::sqrt(tie);
-        Vec3 tied{0, 0, 0};
-        for (const int* f_ = close; f_ != close + closes; ++f_) {
+        for (const int* f_ = close; f_ != close + closes && !agrees; ++f_) {
           const int f = *f_;
           if (!within(f, tie_s)) continue;
           if (d2[f] == std::numeric_limits<double>::infinity())
             d2[f] = point_triangle_distance2(x, in.a[f], in.b[f], in.c[f]);
           if (d2[f] > tie) continue;
-          if (dot(in.n[f], nt) > InputSurface::kAgreeAlone * 2 * w) {
+          if (vote.alone(in.n[f]))
             agrees = true;
-            break;
-          }
-          tied = tied + in.n[f];
+          else
+            vote.add(in.n[f]);
         }
-        agrees = agrees || dot(tied, nt) > 0;
+        agrees = agrees || vote.summed();
       }
       folds = folds || !agrees;
       return out > stop; // no better: the rest does not matter

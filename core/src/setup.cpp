@@ -385,7 +385,7 @@ void Simplifier::prepare() {
   // Not when the target is asked at any cost (max_price_jump 0): the eased passes then fold
   // where nothing else reaches it, as before. The hierarchy is built when a plan first asks.
   if (opt_.against_input && opt_.relax_to_reach_target && opt_.max_price_jump > 0) {
-    const TurnedSlots turned{&turned_, &corner_source_};
+    const TurnedSlots turned = turned_slots();
     std::vector<uint8_t> by_slot;
     if (turned.any()) {
       by_slot.resize(t.size() / 3);

@@ -278,6 +278,7 @@ class Simplifier {
   // same way, Welding::same_way); output faces take it back. Empty: the run's orientation is
   // the output's.
   std::vector<uint8_t> turned_;
+  TurnedSlots turned_slots() const { return {&turned_, &corner_source_}; } // by face slot
   size_t faces_ = 0, vertices_ = 0, target_faces_ = 0, target_vertices_ = 0;
   size_t faces0_ = 0;
   double reference_area_ = 1; // mean input triangle area (LocalError's weight)

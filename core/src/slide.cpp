@@ -187,14 +187,14 @@ uint32_t Simplifier::slide_choice(uint32_t v, const Ring& ring) const {
   };
   std::array<std::pair<double, uint32_t>, kSlideTries> tries;
   int tried = 0;
+  const TurnedSlots slots = turned_slots();
+  const bool fan_turned = slots.any() && slots(ring.f[0]);
   for (auto p = points.begin() + 1; p != points.end(); ++p) {
     const uint32_t u = p->id;
     if ((flags_[u] & kFlagLocked) || !slide_target_[u]) continue;
     // Its per-corner data must come from a face wound as the fan's (an orientation border is
     // a constrained edge, but a point can be handed across one by a removal along it).
-    if (!turned_.empty() && !corner_source_.empty() &&
-        turned_[slide_corner_[u] / 3] != turned_[corner_source_[3 * size_t(ring.f[0])] / 3])
-      continue;
+    if (slots.any() && bool(turned_[slide_corner_[u] / 3]) != fan_turned) continue;
     const std::pair<double, uint32_t> e{quadric(p->x), u};
     if (tried < kSlideTries) {
       tries[tried++] = e;
@@ -283,10 +283,10 @@ uint32_t Simplifier::slide_choice(uint32_t v, const Ring& ring) const {
     // area without it. Only where the run built its hierarchy (the CAD parts, where those
     // fans are): elsewhere refused, as building it would take 16 bytes a face at the peak.
     // The fan's triangle i stands where ring face i did.
-    const uint64_t turned = TurnedSlots{&turned_, &corner_source_}.triangles(
-        ring.faces, [&](int i) { return ring.f[i]; });
     if (!folds && doubts)
-      folds = !slide_whole_input_ || input_.folds(trial, eval_, 0, InputSurface::kGridMax, turned);
+      folds = !slide_whole_input_ ||
+              input_.folds(trial, eval_, 0, InputSurface::kGridMax,
+                           slots.triangles(ring.faces, [&](int i) { return ring.f[i]; }));
     if (folds) chosen = kNone;
   }
   return chosen;
