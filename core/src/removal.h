@@ -76,10 +76,10 @@ class Planner {
   // Judges fold-overs against the input (CarriedPoints::folds_input) too. nullptr: not.
   void set_carried(const CarriedPoints* carried) { carried_ = carried; }
   // Judges fold-overs against the input's nearest faces too (InputSurface::folds): every
-  // triangle in the eased passes, elsewhere those over kInputCheckCovers input faces whose
-  // corners' normals are unsure, at most kInputCheckSide grid cells a side, and, whatever
-  // their corners, those of limits.large_triangle_area, refused past limits.fold_budget of
-  // folded area. nullptr: not.
+  // triangle in the eased passes, elsewhere those over kInputCheckCovers input faces (any,
+  // where `turned` holds pieces) whose corners' normals are unsure, at most kInputCheckSide
+  // grid cells a side, and, whatever their corners, those of limits.large_triangle_area,
+  // refused past limits.fold_budget of folded area. nullptr: not.
   void set_input(const InputSurface* input, TurnedSlots turned = {}) {
     input_ = input;
     turned_ = turned;

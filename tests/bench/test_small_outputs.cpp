@@ -60,7 +60,8 @@ TEST(SmallOutputs, LargeTrianglesDoNotFoldOverAPercentOfTheArea) {
 // and walls disagree as written), welded for the run. A slope of a wall's orientation across
 // the tiers agreed with both as the run held them; written back, it faced against the floors
 // nearest it: at 10 %, 2.5 % of the output's area folded against QECD's 0.17 %. Judged as
-// written, 1.1 % (the remaining folds are the small triangles of the normal passes, unasked).
+// written, 1.1 %; with the small triangles where corners doubt asked of the input too (the
+// corners' normals cannot see how a piece was written), 0.77 %.
 TEST(SmallOutputs, PiecesWrittenInOtherOrientationsAreJudgedAsWritten) {
   const std::string boeing = vrs_test::cgal_mesh("boeing.off");
   if (boeing.empty()) GTEST_SKIP() << "CGAL's data set is missing";
@@ -72,5 +73,5 @@ TEST(SmallOutputs, PiecesWrittenInOtherOrientationsAreJudgedAsWritten) {
   EXPECT_GT(r.welded_vertices, 0u);
   EXPECT_EQ(r.reoriented_faces, 0u) << "every face written as its input was";
   EXPECT_EQ(vrs_test::check_run(in, out, o, r), "");
-  EXPECT_LT(vrs_bench::fold_over_share(in, out, 30000), 0.0125);
+  EXPECT_LT(vrs_bench::fold_over_share(in, out, 30000), 0.01);
 }
