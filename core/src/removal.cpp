@@ -100,13 +100,9 @@ Reject Planner::plan(uint32_t v, const Ring& ring, Vec3 n, Patch& out, double& c
       // Each new triangle as its first corner's face (the output writes it so).
       const uint64_t turned =
           turned_.triangles(out.count, [&](int t) { return ring.f[out.from[t][0]]; });
-      // Where pieces are held turned from how they were written, the corners' normals are the
-      // run's, blind to a fold as written: where they doubt, small triangles are asked too
-      // (boeing at 10 %: 1.09 -> 0.77 % folded; no other mesh of the benchmark has such pieces).
-      const double covers = turned_.any() ? 0.0 : kInputCheckCovers;
       const bool folds = eased ? input_->folds(out, *eval_, 0, InputSurface::kGridMax, turned)
-                               : (out.corner_doubts &&
-                                  input_->folds(out, *eval_, covers, kInputCheckSide, turned)) ||
+                               : (out.corner_doubts && input_->folds(out, *eval_, input_covers_,
+                                                                     kInputCheckSide, turned)) ||
                                      large_triangles_fold(out, turned);
       if (folds) why = RejectFoldOver;
     }
