@@ -354,6 +354,10 @@ def main():
         lines += ["## The worst runs, rendered beside QECD", "",
                   "`bench/render_worst.py`: the same runs made again and drawn from one view.", "",
                   open(rendered).read().rstrip("\n"), ""]
+    peers = os.path.join(os.path.dirname(os.path.abspath(__file__)), "tail_peers.md")
+    if os.path.exists(peers):
+        lines += ["## The tail's runs and the vertex keepers that beat them", "",
+                  open(peers).read().rstrip("\n"), ""]
     lines += ["## Closed meshes off target where QECD with Preserve Topology reaches it (ours)", ""]
     misses = []
     for k, m in sorted(runs.items()):

@@ -107,6 +107,8 @@ if [ "$report" -eq 1 ]; then
   # The ten worst runs of ours, rendered beside QECD (bench/renders/worst/).
   python3 "$top/bench/render_worst.py" "$csv" "$top/bench/renders/worst" "$bench" \
     "$top/build/bin/vrs_render" "$top/scripts/lib/on_display.sh" 10
+  # What the peers that beat ours in the tail gave up (topology, folds): bench/tail_peers.md.
+  python3 "$top/bench/tail_peers.py" "$csv" "$top/bench/tail_peers.md" "$bench"
   python3 "$top/bench/quality_report.py" "$csv" "$top/bench/QUALITY.md" "$baseline"
   echo "wrote $csv and bench/QUALITY.md" >&2
 else
