@@ -67,22 +67,19 @@ def root(parent, x):
 
 def topology(faces):
     """(components, boundary loops, genus, edges of > 2 faces) of a triangle list."""
-    parent = {}
-    find = lambda x: root(parent, x)  # noqa: E731
+    parent, border_parent = {}, {}
     edges = Counter()
     for t in faces:
         for i in range(len(t)):
             a, b = t[i], t[(i + 1) % len(t)]
             edges[(min(a, b), max(a, b))] += 1
-            parent[find(a)] = find(b)
+            parent[root(parent, a)] = root(parent, b)
     verts = {v for t in faces for v in t}
-    comps = len({find(v) for v in verts})
+    comps = len({root(parent, v) for v in verts})
     border = [e for e, n in edges.items() if n == 1]
-    bparent = {}
-    bfind = lambda x: root(bparent, x)  # noqa: E731
     for a, b in border:
-        bparent[bfind(a)] = bfind(b)
-    loops = len({bfind(v) for e in border for v in e})
+        border_parent[root(border_parent, a)] = root(border_parent, b)
+    loops = len({root(border_parent, v) for e in border for v in e})
     chi = len(verts) - len(edges) + len(faces)
     genus = (2 * comps - chi - loops) / 2
     return comps, loops, genus, sum(1 for n in edges.values() if n > 2)
@@ -96,8 +93,7 @@ def raw_ratio(row, ref):
 
 def describe(t):
     comps, loops, genus, nonmanifold = t
-    g = f"{genus:g}"
-    return f"{comps} part{'s' if comps != 1 else ''}, {loops} border{'s' if loops != 1 else ''}, genus {g}" + (
+    return f"{comps} part{'s' if comps != 1 else ''}, {loops} border{'s' if loops != 1 else ''}, genus {genus:g}" + (
         f", {nonmanifold} edges of > 2 faces" if nonmanifold else "")
 
 
@@ -171,7 +167,8 @@ def main():
                             "--save", tmp], check=True, capture_output=True)
             qecd_fold = float(m["qecd"]["fold_area"] or 0)
             ours_topo = topology(read_ply(f"{tmp}/m_{rt}_ours.ply"))
-            tally["ours_changed"] += bool(gave_up(base, ours_topo, 0, 0))
+            ours_changed = bool(gave_up(base, ours_topo, 0, 0))
+            tally["ours_changed"] += ours_changed
             verdicts = []
             clean = False
             for name, label in better:
@@ -181,16 +178,14 @@ def main():
                 ratio = raw_ratio(m[name], m["qecd"])
                 verdicts.append(f"{label} {ratio:.2f}×: " + ("; ".join(gave) if gave else "**clean**"))
                 clean |= not gave
-            for past in ("", "3"):
-                if past and r <= 3:
-                    continue
+            for past in ("", "3") if r > 3 else ("",):
                 tally["runs" + past] += 1
                 tally["beaten" + past] += bool(better)
                 tally["clean" + past] += clean
             held = " (held out)" if q.held_out(key) else ""
             rows.append(f"| {s} {mesh}{held} | {rt} | {raw_ratio(m['ours'], m['qecd']):.2f} | {100 * float(m['ours']['fold_area'] or 0):.2f} % | "
                         f"{100 * qecd_fold:.2f} % | {describe(base)} | "
-                        f"{'same' if not gave_up(base, ours_topo, 0, 0) else describe(ours_topo)} | "
+                        f"{describe(ours_topo) if ours_changed else 'same'} | "
                         f"{'<br>'.join(verdicts) if verdicts else 'none'} |")
     changed = tally["ours_changed"]
     kept = ("each of its outputs here keeps the input's topology" if not changed else
