@@ -31,8 +31,8 @@ void InputSurface::clamp_to_bulk(const std::function<Vec3(size_t)>& centroid, si
     hi[a] = std::min(hi[a], q3[a] + kBulkSpan * width);
 }
 
-UninitVector<uint32_t> InputSurface::split_order(size_t count,
-                                                 const std::function<Vec3(size_t)>& centroid) {
+UninitVector<InputSurface::SplitItem>
+InputSurface::split_order(size_t count, const std::function<Vec3(size_t)>& centroid) {
   // Top-down median splits on the centroids' widest axis, into the implicit layout the levels
   // read: a node of 2^l leaf slots gives its left child exactly 2^(l-1) * kLeaf items (or all
   // it has), so node i of a level has children 2i and 2i + 1 below.
@@ -50,16 +50,14 @@ UninitVector<uint32_t> InputSurface::split_order(size_t count,
   clamp_to_bulk(centroid, count, lo, hi);
   const double extent = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
   const double scale = extent > 0 && std::isfinite(extent) ? 65535.0 / extent : 0.0;
-  std::vector<std::array<uint16_t, 3>> centre(count);
+  UninitVector<SplitItem> order(count);
   for (size_t f = 0; f < count; ++f) {
     const Vec3 c = centroid(f);
     const double x[3] = {c.x, c.y, c.z};
     for (int a = 0; a < 3; ++a)
-      centre[f][a] = uint16_t(std::min(65535.0, std::max(0.0, (x[a] - lo[a]) * scale + 0.5)));
+      order[f].key[a] = uint16_t(std::min(65535.0, std::max(0.0, (x[a] - lo[a]) * scale + 0.5)));
+    order[f].set_index(uint32_t(f));
   }
-  UninitVector<uint32_t> order(count);
-  for (size_t f = 0; f < count; ++f)
-    order[f] = uint32_t(f);
   size_t slots = 1;
   while (slots * kLeaf < count)
     slots *= 2;
@@ -76,13 +74,13 @@ UninitVector<uint32_t> InputSurface::split_order(size_t count,
       uint16_t qlo[3] = {65535, 65535, 65535}, qhi[3] = {0, 0, 0};
       for (size_t i = r.begin; i < r.end; ++i)
         for (int a = 0; a < 3; ++a)
-          qlo[a] = std::min(qlo[a], centre[order[i]][a]),
-          qhi[a] = std::max(qhi[a], centre[order[i]][a]);
+          qlo[a] = std::min(qlo[a], order[i].key[a]), qhi[a] = std::max(qhi[a], order[i].key[a]);
       int axis = 0;
       for (int a = 1; a < 3; ++a)
         if (qhi[a] - qlo[a] > qhi[axis] - qlo[axis]) axis = a;
-      std::nth_element(order.begin() + r.begin, order.begin() + left, order.begin() + r.end,
-                       [&](uint32_t x, uint32_t y) { return centre[x][axis] < centre[y][axis]; });
+      std::nth_element(
+          order.begin() + r.begin, order.begin() + left, order.begin() + r.end,
+          [&](const SplitItem& x, const SplitItem& y) { return x.key[axis] < y.key[axis]; });
       todo.push_back({left, r.end, r.slots / 2});
     }
     todo.push_back({r.begin, left, r.slots / 2});
@@ -92,19 +90,19 @@ UninitVector<uint32_t> InputSurface::split_order(size_t count,
 
 void InputSurface::order_faces(const Evaluator& eval) const {
   const size_t faces = tris_.size() / 3;
-  UninitVector<uint32_t> order = split_order(faces, [&](size_t f) {
+  UninitVector<SplitItem> order = split_order(faces, [&](size_t f) {
     return (eval.position(tris_[3 * f]) + eval.position(tris_[3 * f + 1]) +
             eval.position(tris_[3 * f + 2])) *
            (1.0 / 3);
   });
   // Face i takes face order[i], cycle by cycle; a placed entry is marked order[i] = i.
   for (size_t i = 0; i < faces; ++i) {
-    if (order[i] == i) continue;
+    if (order[i].index() == i) continue;
     const std::array<uint32_t, 3> first = {tris_[3 * i], tris_[3 * i + 1], tris_[3 * i + 2]};
     const uint8_t first_turned = turned_.empty() ? 0 : turned_[i];
     for (size_t j = i;;) {
-      const size_t k = order[j];
-      order[j] = uint32_t(j);
+      const size_t k = order[j].index();
+      order[j].set_index(uint32_t(j));
       if (k == i) {
         std::copy(first.begin(), first.end(), &tris_[3 * j]);
         if (!turned_.empty()) turned_[j] = first_turned;
@@ -218,7 +216,7 @@ void InputSurface::cut_long_faces(const Evaluator& eval) const {
       pieces_.push_back(piece);
     }
   }
-  const UninitVector<uint32_t> order = split_order(items_.size(), [&](size_t i) {
+  const UninitVector<SplitItem> order = split_order(items_.size(), [&](size_t i) {
     const uint32_t item = items_[i];
     if (item < faces)
       return (eval.position(tris_[3 * item]) + eval.position(tris_[3 * item + 1]) +
@@ -229,7 +227,7 @@ void InputSurface::cut_long_faces(const Evaluator& eval) const {
   });
   UninitVector<uint32_t> ordered(items_.size());
   for (size_t i = 0; i < items_.size(); ++i)
-    ordered[i] = items_[order[i]];
+    ordered[i] = items_[order[i].index()];
   items_.swap(ordered);
 }
 

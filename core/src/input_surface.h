@@ -178,9 +178,18 @@ class InputSurface {
     if (items_.empty() || items_[i] < tris_.size() / 3) return nullptr;
     return &pieces_[items_[i] - tris_.size() / 3].box;
   }
+  // An item's centroid to 16 bits an axis and its index, side by side: the splits read the
+  // keys in place (through an index array they missed the cache: 300 k faces' build 0.062 ->
+  // 0.053 s). 10 bytes, what the keys and the index array took apart.
+  struct SplitItem {
+    uint16_t key[3];
+    uint16_t low, high; // the index, in halves: no padding
+    uint32_t index() const { return uint32_t(low) | uint32_t(high) << 16; }
+    void set_index(uint32_t i) { low = uint16_t(i), high = uint16_t(i >> 16); }
+  };
   // The order of `count` items for the leaves, a median split of their centroids at each level.
-  static UninitVector<uint32_t> split_order(size_t count,
-                                            const std::function<Vec3(size_t)>& centroid);
+  static UninitVector<SplitItem> split_order(size_t count,
+                                             const std::function<Vec3(size_t)>& centroid);
   void order_faces(const Evaluator& eval) const; // tris_ in split_order
   // A sliver lying across the axes (a diagonal cylinder's faces from end to end) has a box
   // spanning much of the mesh, opened by every question near any of it: on such a cylinder of
