@@ -43,12 +43,14 @@ else
   echo "== the worker threads under ThreadSanitizer"
   cmake -S "$top" -B "$top/build/tsan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVRS_TSAN=ON \
     -DVRS_BUILD_TESTS=ON -DVRS_BUILD_TOOLS=OFF -DVRS_BUILD_PLUGIN=OFF -DVRS_BUILD_BENCH=OFF >/dev/null
-  cmake --build "$top/build/tsan" --target test_threads test_parts test_fan_split test_setup_threads test_bucket_queue -j "$(nproc)"
+  cmake --build "$top/build/tsan" --target test_threads test_parts test_fan_split test_setup_threads test_bucket_queue \
+    test_input_surface -j "$(nproc)"
   # One thread against two and eight (not three too: each run is 20 times slower here).
   tsan() { VRS_TEST_THREAD_COUNTS=2,8 TSAN_OPTIONS=halt_on_error=1 "$top/build/tsan/bin/$1" "${@:2}"; }
   # In two lanes side by side, the two long ones (5 minutes each) apart; each lane's log whole.
   (tsan test_threads --gtest_filter='Workers.*:Threads.*' && tsan test_fan_split &&
-    tsan test_bucket_queue --gtest_filter='BucketQueue.Fill*') >"$top/build/tsan/lane1.log" 2>&1 &
+    tsan test_bucket_queue --gtest_filter='BucketQueue.Fill*' &&
+    tsan test_input_surface --gtest_filter='InputSurface.ADeferredBuild*') >"$top/build/tsan/lane1.log" 2>&1 &
   lane1=$!
   (tsan test_parts && tsan test_setup_threads) >"$top/build/tsan/lane2.log" 2>&1 &
   lane2=$!

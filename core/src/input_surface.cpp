@@ -10,15 +10,17 @@
 namespace vrs {
 
 void InputSurface::clamp_to_bulk(const std::function<Vec3(size_t)>& centroid, size_t faces,
-                                 double* lo, double* hi) {
+                                 double* lo, double* hi, Workers* workers) {
   if (faces < 8) return;
-  std::vector<float> x(faces); // before the centroids' 6 bytes a face: not a new peak
+  UninitVector<float> x(faces); // before the centroids' 6 bytes a face: not a new peak
   double q1[3], q3[3], width = 0;
   for (int a = 0; a < 3; ++a) {
-    for (size_t f = 0; f < faces; ++f) {
-      const Vec3 c = centroid(f);
-      x[f] = float(a == 0 ? c.x : a == 1 ? c.y : c.z);
-    }
+    for_each_block(workers, faces, 65536, [&](size_t begin, size_t end) {
+      for (size_t f = begin; f < end; ++f) {
+        const Vec3 c = centroid(f);
+        x[f] = float(a == 0 ? c.x : a == 1 ? c.y : c.z);
+      }
+    });
     std::nth_element(x.begin(), x.begin() + faces / 4, x.end());
     q1[a] = x[faces / 4];
     std::nth_element(x.begin() + faces / 4, x.begin() + 3 * faces / 4, x.end());
@@ -32,7 +34,8 @@ void InputSurface::clamp_to_bulk(const std::function<Vec3(size_t)>& centroid, si
 }
 
 UninitVector<InputSurface::SplitItem>
-InputSurface::split_order(size_t count, const std::function<Vec3(size_t)>& centroid) {
+InputSurface::split_order(size_t count, const std::function<Vec3(size_t)>& centroid,
+                          Workers* workers) {
   // Top-down median splits on the centroids' widest axis, into the implicit layout the levels
   // read: a node of 2^l leaf slots gives its left child exactly 2^(l-1) * kLeaf items (or all
   // it has), so node i of a level has children 2i and 2i + 1 below.
@@ -40,35 +43,46 @@ InputSurface::split_order(size_t count, const std::function<Vec3(size_t)>& centr
   // took 12, and the faces permuted in place: this set-up was the run's peak, 7 MB above the
   // hierarchy it leaves at 300 k faces). Any split gives the same answers: folds() asks the
   // nearest face, then every face as near (ties), so the hierarchy decides only how fast.
+  // Block by block on the workers; bounds and splits do not depend on the blocks.
+  constexpr size_t kBlock = 65536;
+  const size_t blocks = (count + kBlock - 1) / kBlock;
+  std::vector<std::array<double, 6>> block_bounds(blocks);
+  for_each_block(workers, count, kBlock, [&](size_t begin, size_t end) {
+    auto& b = block_bounds[begin / kBlock];
+    b = {INFINITY, INFINITY, INFINITY, -INFINITY, -INFINITY, -INFINITY};
+    for (size_t f = begin; f < end; ++f) {
+      const Vec3 c = centroid(f);
+      const double x[3] = {c.x, c.y, c.z};
+      for (int a = 0; a < 3; ++a)
+        b[a] = std::min(b[a], x[a]), b[3 + a] = std::max(b[3 + a], x[a]);
+    }
+  });
   double lo[3] = {INFINITY, INFINITY, INFINITY}, hi[3] = {-INFINITY, -INFINITY, -INFINITY};
-  for (size_t f = 0; f < count; ++f) {
-    const Vec3 c = centroid(f);
-    const double x[3] = {c.x, c.y, c.z};
+  for (const auto& b : block_bounds)
     for (int a = 0; a < 3; ++a)
-      lo[a] = std::min(lo[a], x[a]), hi[a] = std::max(hi[a], x[a]);
-  }
-  clamp_to_bulk(centroid, count, lo, hi);
+      lo[a] = std::min(lo[a], b[a]), hi[a] = std::max(hi[a], b[3 + a]);
+  clamp_to_bulk(centroid, count, lo, hi, workers);
   const double extent = std::max({hi[0] - lo[0], hi[1] - lo[1], hi[2] - lo[2]});
   const double scale = extent > 0 && std::isfinite(extent) ? 65535.0 / extent : 0.0;
   UninitVector<SplitItem> order(count);
-  for (size_t f = 0; f < count; ++f) {
-    const Vec3 c = centroid(f);
-    const double x[3] = {c.x, c.y, c.z};
-    for (int a = 0; a < 3; ++a)
-      order[f].key[a] = uint16_t(std::min(65535.0, std::max(0.0, (x[a] - lo[a]) * scale + 0.5)));
-    order[f].set_index(uint32_t(f));
-  }
+  for_each_block(workers, count, kBlock, [&](size_t begin, size_t end) {
+    for (size_t f = begin; f < end; ++f) {
+      const Vec3 c = centroid(f);
+      const double x[3] = {c.x, c.y, c.z};
+      for (int a = 0; a < 3; ++a)
+        order[f].key[a] = uint16_t(std::min(65535.0, std::max(0.0, (x[a] - lo[a]) * scale + 0.5)));
+      order[f].set_index(uint32_t(f));
+    }
+  });
   size_t slots = 1;
   while (slots * kLeaf < count)
     slots *= 2;
   struct Range {
     size_t begin, end, slots;
   };
-  std::vector<Range> todo{{0, count, slots}};
-  while (!todo.empty()) {
-    const Range r = todo.back();
-    todo.pop_back();
-    if (r.slots <= 1 || r.end - r.begin <= size_t(kLeaf)) continue;
+  // A range's split, its halves to `out`: disjoint ranges split apart, so in any order.
+  auto split = [&](const Range& r, std::vector<Range>& out) {
+    if (r.slots <= 1 || r.end - r.begin <= size_t(kLeaf)) return;
     const size_t left = std::min(r.end, r.begin + r.slots / 2 * kLeaf);
     if (left < r.end) {
       uint16_t qlo[3] = {65535, 65535, 65535}, qhi[3] = {0, 0, 0};
@@ -81,20 +95,43 @@ InputSurface::split_order(size_t count, const std::function<Vec3(size_t)>& centr
       std::nth_element(
           order.begin() + r.begin, order.begin() + left, order.begin() + r.end,
           [&](const SplitItem& x, const SplitItem& y) { return x.key[axis] < y.key[axis]; });
-      todo.push_back({left, r.end, r.slots / 2});
+      out.push_back({left, r.end, r.slots / 2});
     }
-    todo.push_back({r.begin, left, r.slots / 2});
+    out.push_back({r.begin, left, r.slots / 2});
+  };
+  // Level by level, each level's ranges on the workers, up to 32 ranges (two of the median's
+  // halves for each of 16 threads: the same for any count, as the projection is made on one);
+  // then each range's subtree on a worker.
+  std::vector<Range> ranges{{0, count, slots}};
+  std::vector<std::vector<Range>> halves;
+  while (workers && !ranges.empty() && ranges.size() < 32) {
+    halves.assign(ranges.size(), {});
+    for_each_on(workers, ranges.size(), [&](size_t i) { split(ranges[i], halves[i]); });
+    ranges.clear();
+    for (const auto& h : halves)
+      ranges.insert(ranges.end(), h.begin(), h.end());
   }
+  for_each_on(workers, ranges.size(), [&](size_t i) {
+    std::vector<Range> todo{ranges[i]};
+    while (!todo.empty()) {
+      const Range r = todo.back();
+      todo.pop_back();
+      split(r, todo);
+    }
+  });
   return order;
 }
 
-void InputSurface::order_faces(const Evaluator& eval) const {
+void InputSurface::order_faces(const Evaluator& eval, Workers* workers) const {
   const size_t faces = tris_.size() / 3;
-  UninitVector<SplitItem> order = split_order(faces, [&](size_t f) {
-    return (eval.position(tris_[3 * f]) + eval.position(tris_[3 * f + 1]) +
-            eval.position(tris_[3 * f + 2])) *
-           (1.0 / 3);
-  });
+  UninitVector<SplitItem> order = split_order(
+      faces,
+      [&](size_t f) {
+        return (eval.position(tris_[3 * f]) + eval.position(tris_[3 * f + 1]) +
+                eval.position(tris_[3 * f + 2])) *
+               (1.0 / 3);
+      },
+      workers);
   // Face i takes face order[i], cycle by cycle; a placed entry is marked order[i] = i.
   for (size_t i = 0; i < faces; ++i) {
     if (order[i].index() == i) continue;
@@ -146,32 +183,40 @@ void part_box(const Vec3 p[3], Vec3 u, double t0, double t1, float lo[3], float 
 
 } // namespace
 
-void InputSurface::cut_long_faces(const Evaluator& eval) const {
+void InputSurface::cut_long_faces(const Evaluator& eval, Workers* workers) const {
   const size_t faces = tris_.size() / 3;
   // How many pieces each face is cut into: a face whose box's middle extent passes kCutAt
   // times its height (a sliver lying across the axes) into pieces about two heights across
   // that extent, up to kMostPieces.
   std::vector<uint8_t> pieces(faces, 1);
-  size_t cut = 0, total = 0;
-  for (size_t f = 0; f < faces; ++f) {
-    const Vec3 p[3] = {eval.position(tris_[3 * f]), eval.position(tris_[3 * f + 1]),
-                       eval.position(tris_[3 * f + 2])};
-    double longest = 0;
-    for (int k = 0; k < 3; ++k)
-      longest = std::max(longest, length(p[(k + 1) % 3] - p[k]));
-    const double height = length(cross(p[1] - p[0], p[2] - p[0])) / longest;
-    auto extent = [](double a, double b, double c) {
-      return std::max({a, b, c}) - std::min({a, b, c});
-    };
-    double e[3] = {extent(p[0].x, p[1].x, p[2].x), extent(p[0].y, p[1].y, p[2].y),
-                   extent(p[0].z, p[1].z, p[2].z)};
-    std::sort(e, e + 3);
-    if (e[1] > kCutAt * height) {
-      pieces[f] = uint8_t(std::min<double>(kMostPieces, std::ceil(e[1] / (2 * height))));
-      ++cut;
+  constexpr size_t kBlock = 65536; // on the workers, the blocks' counts summed after
+  std::vector<std::pair<size_t, size_t>> counted((faces + kBlock - 1) / kBlock);
+  for_each_block(workers, faces, kBlock, [&](size_t begin, size_t end) {
+    size_t cut = 0, total = 0;
+    for (size_t f = begin; f < end; ++f) {
+      const Vec3 p[3] = {eval.position(tris_[3 * f]), eval.position(tris_[3 * f + 1]),
+                         eval.position(tris_[3 * f + 2])};
+      double longest = 0;
+      for (int k = 0; k < 3; ++k)
+        longest = std::max(longest, length(p[(k + 1) % 3] - p[k]));
+      const double height = length(cross(p[1] - p[0], p[2] - p[0])) / longest;
+      auto extent = [](double a, double b, double c) {
+        return std::max({a, b, c}) - std::min({a, b, c});
+      };
+      double e[3] = {extent(p[0].x, p[1].x, p[2].x), extent(p[0].y, p[1].y, p[2].y),
+                     extent(p[0].z, p[1].z, p[2].z)};
+      std::sort(e, e + 3);
+      if (e[1] > kCutAt * height) {
+        pieces[f] = uint8_t(std::min<double>(kMostPieces, std::ceil(e[1] / (2 * height))));
+        ++cut;
+      }
+      total += pieces[f];
     }
-    total += pieces[f];
-  }
+    counted[begin / kBlock] = {cut, total};
+  });
+  size_t cut = 0, total = 0;
+  for (const auto& [c, t] : counted)
+    cut += c, total += t;
   // A few slivers in a large mesh: each question meets only those near it. Not worth an
   // item's 4 bytes a face.
   if (cut == 0 || cut < faces / kCutShare ||
@@ -216,26 +261,54 @@ void InputSurface::cut_long_faces(const Evaluator& eval) const {
       pieces_.push_back(piece);
     }
   }
-  const UninitVector<SplitItem> order = split_order(items_.size(), [&](size_t i) {
-    const uint32_t item = items_[i];
-    if (item < faces)
-      return (eval.position(tris_[3 * item]) + eval.position(tris_[3 * item + 1]) +
-              eval.position(tris_[3 * item + 2])) *
-             (1.0 / 3);
-    const Box& b = pieces_[item - faces].box;
-    return Vec3{b.lo[0] + b.hi[0], b.lo[1] + b.hi[1], b.lo[2] + b.hi[2]} * 0.5;
-  });
+  const UninitVector<SplitItem> order = split_order(
+      items_.size(),
+      [&](size_t i) {
+        const uint32_t item = items_[i];
+        if (item < faces)
+          return (eval.position(tris_[3 * item]) + eval.position(tris_[3 * item + 1]) +
+                  eval.position(tris_[3 * item + 2])) *
+                 (1.0 / 3);
+        const Box& b = pieces_[item - faces].box;
+        return Vec3{b.lo[0] + b.hi[0], b.lo[1] + b.hi[1], b.lo[2] + b.hi[2]} * 0.5;
+      },
+      workers);
   UninitVector<uint32_t> ordered(items_.size());
   for (size_t i = 0; i < items_.size(); ++i)
     ordered[i] = items_[order[i].index()];
   items_.swap(ordered);
 }
 
-void InputSurface::build(const Evaluator& eval) const {
-  std::call_once(build_once_, [&] { build_now(eval); });
+namespace {
+thread_local InputSurface::Deferral* deferring = nullptr; // the innermost on this thread
+} // namespace
+
+InputSurface::Deferral::Deferral() : outer_(deferring) {
+  deferring = this;
+}
+InputSurface::Deferral::~Deferral() {
+  deferring = outer_;
 }
 
-void InputSurface::build_now(const Evaluator& eval) const {
+bool InputSurface::build(const Evaluator& eval) const {
+  if (done_.load(std::memory_order_acquire)) return true;
+  if (deferring) {
+    deferring->wanted_ = true;
+    return false;
+  }
+  std::call_once(build_once_, [&] { build_now(eval, nullptr); });
+  return true;
+}
+
+void InputSurface::build_on(const Evaluator& eval, Workers* workers) const {
+  std::call_once(build_once_, [&] { build_now(eval, workers); });
+}
+
+void InputSurface::build_now(const Evaluator& eval, Workers* workers) const {
+  struct Done { // whichever way it returns
+    std::atomic<bool>& flag;
+    ~Done() { flag.store(true, std::memory_order_release); }
+  } done{done_};
   size_t kept = 0;
   for (size_t i = 0; i + 2 < tris_.size(); i += 3) {
     const Vec3 a = eval.position(tris_[i]), b = eval.position(tris_[i + 1]),
@@ -253,8 +326,8 @@ void InputSurface::build_now(const Evaluator& eval) const {
   const size_t faces = tris_.size() / 3;
   if (faces == 0) return;
   mean_area_ /= double(faces);
-  order_faces(eval);
-  cut_long_faces(eval);
+  order_faces(eval, workers);
+  cut_long_faces(eval, workers);
   leaves_ = (item_count() + kLeaf - 1) / kLeaf;
   levels_.emplace_back(); // the leaves' boxes: made from their faces when read (leaf_box)
   size_t below = leaves_;
@@ -445,8 +518,8 @@ int InputSurface::grid_side(double covers, int max_side) {
 
 bool InputSurface::folds(const Patch& patch, const Evaluator& eval, double min_covers, int max_side,
                          uint64_t turned) const {
-  build(eval);
-  size_t hint = kNoFace; // the sample points are asked in order, each near the one before
+  if (!build(eval)) return true; // deferred: the caller plans again once it is built
+  size_t hint = kNoFace;         // the sample points are asked in order, each near the one before
   for (int t = 0; t < patch.count; ++t) {
     const auto& tri = patch.tri[t];
     const Vec3 a = patch.q[tri[0]], b = patch.q[tri[1]], c = patch.q[tri[2]];
@@ -463,7 +536,7 @@ bool InputSurface::folds(const Patch& patch, const Evaluator& eval, double min_c
 
 double InputSurface::folded_area(const Patch& patch, const Evaluator& eval, double min_area,
                                  double budget, uint64_t turned) const {
-  build(eval);
+  if (!build(eval)) return std::numeric_limits<double>::infinity(); // deferred, as folds()
   size_t hint = kNoFace;
   double folded = 0;
   const double inf = std::numeric_limits<double>::infinity();

@@ -7,6 +7,7 @@
 #pragma once
 
 #include <algorithm>
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <mutex>
@@ -61,12 +62,35 @@ class InputSurface {
   }
   // Builds the hierarchy over the faces kept; faces without area are left out (they have no
   // side). Once, by the first caller (folds() calls it, from any thread); nothing to do
-  // afterwards. Runs on smooth meshes never ask, and never pay for it (0.35 s at 1.2 M faces;
-  // boxes of 6 bytes a face, 10 more while it is set up).
-  void build(const Evaluator& eval) const;
+  // afterwards. Runs on smooth meshes never ask, and never pay for it (0.26 s at 1.2 M faces;
+  // boxes of 6 bytes a face, 10 more while it is set up). False: not built, as a Deferral on
+  // this thread asked.
+  bool build(const Evaluator& eval) const;
+  // The same, its splits spread over the workers (from outside their loops).
+  void build_on(const Evaluator& eval, Workers* workers) const;
   bool kept() const { return !tris_.empty(); }
-  // Whether the hierarchy was built (not to be asked while another thread may build it).
-  bool built() const { return !levels_.empty(); }
+  // Whether the hierarchy was built.
+  bool built() const { return done_.load(std::memory_order_acquire) && !levels_.empty(); }
+
+  // While one lives on a thread, a question there that would build the hierarchy builds
+  // nothing: it answers "folds" and wanted() turns true. A loop on the workers plans under
+  // one, so that no thread builds it alone while the others wait (bunny00 x2, parts of
+  // 18 852 vertices: 0.26 s in one part of a round whose parts took 0.03 s, 16 cores projected
+  // 6.8x, deferred 7.7-8.7x; bunny00 x1 at default parts 5.7 -> 7.4x); the caller throws away
+  // what it planned, builds on all the workers, and plans again.
+  class Deferral {
+   public:
+    Deferral();
+    ~Deferral();
+    Deferral(const Deferral&) = delete;
+    Deferral& operator=(const Deferral&) = delete;
+    bool wanted() const { return wanted_; }
+
+   private:
+    friend class InputSurface;
+    bool wanted_ = false;
+    Deferral* outer_;
+  };
   // The faces kept (3 indices a face; after build(), in the hierarchy's order).
   const UninitVector<uint32_t>& faces() const { return tris_; }
 
@@ -133,7 +157,7 @@ class InputSurface {
   // fuzz/open/'s slow case 8.9 -> 5.9 s). An ordinary mesh's whole range lies within its
   // bulk's: nothing changes.
   static void clamp_to_bulk(const std::function<Vec3(size_t)>& centroid, size_t faces, double* lo,
-                            double* hi);
+                            double* hi, Workers* workers = nullptr);
 
  private:
   static constexpr int kLeaf = 4;
@@ -188,16 +212,16 @@ class InputSurface {
     void set_index(uint32_t i) { low = uint16_t(i), high = uint16_t(i >> 16); }
   };
   // The order of `count` items for the leaves, a median split of their centroids at each level.
-  static UninitVector<SplitItem> split_order(size_t count,
-                                             const std::function<Vec3(size_t)>& centroid);
-  void order_faces(const Evaluator& eval) const; // tris_ in split_order
+  static UninitVector<SplitItem>
+  split_order(size_t count, const std::function<Vec3(size_t)>& centroid, Workers* workers);
+  void order_faces(const Evaluator& eval, Workers* workers) const; // tris_ in split_order
   // A sliver lying across the axes (a diagonal cylinder's faces from end to end) has a box
   // spanning much of the mesh, opened by every question near any of it: on such a cylinder of
   // 1 024 faces every question read every face (4.4 s at 10 %; 0.75 s cut). Where they are
   // not rare, such faces enter the hierarchy cut across their length into pieces, each with
   // the box of its part; a face's nearest point lies in one of its pieces' boxes, so every
   // search answers as before.
-  void cut_long_faces(const Evaluator& eval) const;
+  void cut_long_faces(const Evaluator& eval, Workers* workers) const;
   // Whether the faces within sqrt(r2) of x agree with a triangle facing n (kAgreeAlone).
   // `turned`: the asking triangle's orientation (keep()), in these three.
   bool ties_agree(Vec3 x, double r2, Vec3 n, const Evaluator& eval, bool turned) const;
@@ -210,12 +234,13 @@ class InputSurface {
 
   // Writes the mutable members below: const because the hierarchy is built on first use,
   // under build_once_, before any reader sees them.
-  void build_now(const Evaluator& eval) const;
+  void build_now(const Evaluator& eval, Workers* workers) const;
   mutable std::once_flag build_once_;
-  mutable UninitVector<uint32_t> tris_;  // 3 a face, faces with area only
-  mutable std::vector<uint8_t> turned_;  // a byte a face of tris_, or empty (keep())
-  mutable double mean_area_ = 0;         // of the input's faces with area
-  mutable UninitVector<uint32_t> items_; // a face (< faces), or faces + its index in pieces_
+  mutable std::atomic<bool> done_{false}; // build_now has run
+  mutable UninitVector<uint32_t> tris_;   // 3 a face, faces with area only
+  mutable std::vector<uint8_t> turned_;   // a byte a face of tris_, or empty (keep())
+  mutable double mean_area_ = 0;          // of the input's faces with area
+  mutable UninitVector<uint32_t> items_;  // a face (< faces), or faces + its index in pieces_
   mutable std::vector<Piece> pieces_;
   mutable size_t leaves_ = 0;
   // levels_[l]: the boxes of level l, each over two of the level below (levels_[0] is empty:

@@ -5,6 +5,7 @@
 #include <algorithm>
 #include <limits>
 #include <memory>
+#include <utility>
 
 #include "accounting.h"
 #include "simplifier.h"
@@ -112,7 +113,8 @@ struct Simplifier::Part {
   double max_factor = 0;
   std::array<size_t, RejectCount> rejected{};
   ptrdiff_t flip_refused = 0;
-  bool full = false; // its arena could not take the next removal's lists: done
+  bool full = false;  // its arena could not take the next removal's lists: done
+  bool waits = false; // a plan asked for the input's hierarchy unbuilt: stopped for the round
 };
 
 size_t Simplifier::removals_needed() const {
@@ -134,13 +136,21 @@ void Simplifier::run_part(Part& part, double threshold, size_t cap, const uint8_
   auto owned = std::make_unique<Planned>(); // kilobytes: not on a worker's stack
   Planned& p = *owned;
   constexpr float kInf = std::numeric_limits<float>::infinity();
+  InputSurface::Deferral wait; // no part builds the input's hierarchy alone (run_cut does)
   for (size_t done = 0; done < cap && !part.queue.empty() && !part.full;) {
     const uint32_t v = part.queue.front();
     if (part.queue.front_factor() > threshold) break;
     part.queue.erase(v);
     p.v = v;
     p.from = -1;
+    const uint8_t hint = chosen_[v];
     plan_removal(p);
+    if (wait.wanted()) { // the plan is thrown away; the part waits for the next round
+      chosen_[v] = hint;
+      part.queue.push(v, factor_[v]);
+      part.waits = true;
+      break;
+    }
     flags_[v] &= ~kFlagStale;
     if (!p.usable) {
       factor_[v] = kInf; // queued again when its ring changes, as the whole queue does
@@ -301,6 +311,12 @@ bool Simplifier::run_cut(Parts& parts, size_t needed0) {
     workers_.for_each(
         parts.count, [&](size_t j) { run_part(part[order[j]], threshold, cap[order[j]], frozen); },
         1);
+    // A part that met a plan needing the input's hierarchy stopped there: built now on all the
+    // workers (bunny00 x2 at parts of 18 852 vertices: 0.26 s in one part, the others 0.03 s).
+    bool waited = false;
+    for (Part& q : part)
+      waited |= std::exchange(q.waits, false);
+    if (waited) input_.build_on(eval_, &workers_);
     size_t removed = 0;
     for (Part& q : part) {
       faces_ -= q.faces_removed;
@@ -319,7 +335,7 @@ bool Simplifier::run_cut(Parts& parts, size_t needed0) {
       rep_.stop = StopReason::Cancelled;
       return false;
     }
-    if (removed < k * stride / 8) break; // the prices rose past what the parts may take
+    if (!waited && removed < k * stride / 8) break; // the prices rose past what parts may take
   }
   return true;
 }

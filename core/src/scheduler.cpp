@@ -1,5 +1,7 @@
 #include "scheduler.h"
 
+#include <atomic>
+
 #include "accounting.h"
 #include "bucket_queue.h"
 #include "heap_queue.h"
@@ -64,26 +66,40 @@ void Simplifier::plan_removal(Planned& p) const {
 template <class Queue> void Simplifier::plan_batch(size_t count, const Queue& queue) {
   // One plan a chunk: most batches of the whole queue's last removals hold a few plans (5 358
   // of 6 885 at 1.2 M faces held four or fewer), which a grain of 4 left on one thread.
+  // A plan that needs the input's hierarchy before it is built waits (InputSurface::Deferral):
+  // it is built on all the workers, and those plans are made again, with the hints they
+  // started from: the plans they would have been.
   const uint32_t* tris = mesh_.triangles.data();
-  workers_.for_each(
-      count,
-      [&](size_t b) {
-        Planned& p = batch_[b];
-        p.v = batch_ids_[b];
-        p.from = batch_from_;
-        if (b + 2 < count) topo_.prefetch_list(batch_ids_[b + 2]);
-        if (b + 1 < count) topo_.prefetch_faces(batch_ids_[b + 1], tris);
-        plan_removal(p);
-        if (!p.usable || p.why != RejectCount) return;
-        for (int i = -1; i < p.ring.verts; ++i) {
-          const uint32_t u = i < 0 ? p.v : p.ring.v[i];
-          queue.prefetch(u);
-          prefetch(&flags_[u]);
-          prefetch(&factor_[u]);
-          if (lazy_) prefetch(&fan_area_[u]);
-        }
-      },
-      /*grain=*/1);
+  std::atomic<bool> deferred{false};
+  auto plan_one = [&](size_t b) {
+    Planned& p = batch_[b];
+    p.v = batch_ids_[b];
+    p.from = batch_from_;
+    if (b + 2 < count) topo_.prefetch_list(batch_ids_[b + 2]);
+    if (b + 1 < count) topo_.prefetch_faces(batch_ids_[b + 1], tris);
+    const uint8_t hint = lazy_ ? chosen_[p.v] : 0;
+    InputSurface::Deferral wait;
+    plan_removal(p);
+    p.deferred = wait.wanted();
+    if (p.deferred) {
+      if (lazy_) chosen_[p.v] = hint;
+      deferred.store(true, std::memory_order_relaxed);
+      return;
+    }
+    if (!p.usable || p.why != RejectCount) return;
+    for (int i = -1; i < p.ring.verts; ++i) {
+      const uint32_t u = i < 0 ? p.v : p.ring.v[i];
+      queue.prefetch(u);
+      prefetch(&flags_[u]);
+      prefetch(&factor_[u]);
+      if (lazy_) prefetch(&fan_area_[u]);
+    }
+  };
+  workers_.for_each(count, plan_one, /*grain=*/1);
+  if (!deferred.load(std::memory_order_relaxed)) return;
+  input_.build_on(eval_, &workers_);
+  for (size_t b = 0; b < count; ++b)
+    if (batch_[b].deferred) plan_one(b); // few: on the caller
 }
 
 template void Simplifier::plan_batch(size_t, const BucketQueue&);

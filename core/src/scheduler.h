@@ -26,6 +26,7 @@ struct Planned {
   uint32_t v;
   int from; // the interval it was read off
   bool stale, usable;
+  bool deferred = false; // it waited for the input's hierarchy (InputSurface::Deferral)
   Reject why;
   double priority;
   Ring ring;

@@ -12,6 +12,7 @@
 #include "local_error.h"
 #include "mesh_checks.h"
 #include "test_meshes.h"
+#include "workers.h"
 
 namespace {
 
@@ -97,6 +98,25 @@ double nearest_by_every_face(const vrs::Mesh& m, const vrs::Evaluator& eval, Vec
   return best;
 }
 
+// A tube of radius 6 along the diagonal from -17 to 17, `around` vertices round each end, each
+// of its faces a sliver from one end to the other (as a CAD tool tessellates a cylinder).
+vrs::Mesh diagonal_tube(int around) {
+  vrs::Mesh m;
+  const Vec3 axis = vrs::normalized(Vec3{1, 1, 1}), e1 = vrs::normalized(Vec3{1, -1, 0}),
+             e2 = vrs::cross(axis, e1);
+  for (int end = 0; end < 2; ++end)
+    for (int i = 0; i < around; ++i) {
+      const double t = 2 * M_PI * i / around;
+      const Vec3 x = axis * (end ? 17.0 : -17.0) + (e1 * std::cos(t) + e2 * std::sin(t)) * 6.0;
+      m.positions.insert(m.positions.end(), {float(x.x), float(x.y), float(x.z)});
+    }
+  for (uint32_t i = 0; i < uint32_t(around); ++i) {
+    const uint32_t j = (i + 1) % around;
+    m.triangles.insert(m.triangles.end(), {i, j, around + j, i, around + j, around + i});
+  }
+  return m;
+}
+
 // Also with needles out to vertices at 1e30, and searched from the answer for the point before.
 TEST(InputSurface, NearestFaceIsTheOneABruteForceSearchFinds) {
   for (const vrs::Mesh& m :
@@ -132,19 +152,9 @@ TEST(InputSurface, NearestFaceIsTheOneABruteForceSearchFinds) {
 TEST(InputSurface, SliversAcrossTheAxesAreSearchedAsEveryFaceWouldBe) {
   // 256 faces, each cut into the most pieces; 40 000, past the pieces' budget.
   for (const auto& [around, points] : {std::pair{128, 2000}, std::pair{20000, 200}}) {
-    vrs::Mesh m;
+    const vrs::Mesh m = diagonal_tube(around);
     const Vec3 axis = vrs::normalized(Vec3{1, 1, 1}), e1 = vrs::normalized(Vec3{1, -1, 0}),
                e2 = vrs::cross(axis, e1);
-    for (int end = 0; end < 2; ++end)
-      for (int i = 0; i < around; ++i) {
-        const double t = 2 * M_PI * i / around;
-        const Vec3 x = axis * (end ? 17.0 : -17.0) + (e1 * std::cos(t) + e2 * std::sin(t)) * 6.0;
-        m.positions.insert(m.positions.end(), {float(x.x), float(x.y), float(x.z)});
-      }
-    for (uint32_t i = 0; i < uint32_t(around); ++i) {
-      const uint32_t j = (i + 1) % around;
-      m.triangles.insert(m.triangles.end(), {i, j, around + j, i, around + j, around + i});
-    }
     const vrs::Evaluator eval = evaluator(m);
     vrs::InputSurface input;
     input.keep(m.triangles);
@@ -160,6 +170,53 @@ TEST(InputSurface, SliversAcrossTheAxesAreSearchedAsEveryFaceWouldBe) {
       Vec3 n;
       ASSERT_TRUE(input.nearest(x, eval, d2, n, &hint));
       ASSERT_EQ(d2, best) << around << " around, point " << i << " at " << r << " from the axis";
+    }
+  }
+}
+
+// A question asked under a Deferral builds nothing and answers "folds"; built afterwards on
+// the workers, the hierarchy is the one a question builds on one thread: the same faces in
+// the same order, and every search (from a hint, an item index) the same. An icosphere of
+// 81 920 faces (two blocks of the parallel passes, 32 ranges split apart) and the diagonal
+// tube whose slivers are cut into pieces.
+TEST(InputSurface, ADeferredBuildIsTheSameHierarchyBuiltOnTheWorkers) {
+  for (const vrs::Mesh& m : {vrs_test::icosphere(6), diagonal_tube(128)}) {
+    const vrs::Evaluator eval = evaluator(m);
+    vrs::InputSurface serial;
+    serial.keep(m.triangles);
+    serial.build(eval);
+    ASSERT_TRUE(serial.built());
+    for (int threads : {2, 3}) {
+      vrs::InputSurface input;
+      input.keep(m.triangles);
+      const Vec3 a{0.1, 0, 1}, b{0, 0.1, 1}, c{0, 0, 1.1};
+      {
+        vrs::InputSurface::Deferral wait;
+        EXPECT_FALSE(wait.wanted());
+        EXPECT_TRUE(input.folds(patch_of(a, b, c), eval)) << "deferred: folds";
+        EXPECT_TRUE(wait.wanted());
+        EXPECT_FALSE(input.built());
+        EXPECT_FALSE(input.build(eval));
+      }
+      vrs::Workers workers(threads);
+      input.build_on(eval, &workers);
+      ASSERT_TRUE(input.built());
+      ASSERT_EQ(input.faces().size(), serial.faces().size());
+      EXPECT_TRUE(std::equal(input.faces().begin(), input.faces().end(), serial.faces().begin()))
+          << threads << " threads";
+      EXPECT_EQ(input.folds(patch_of(a, b, c), eval), serial.folds(patch_of(a, b, c), eval));
+      std::mt19937 rng(5);
+      std::uniform_real_distribution<double> u(-20, 20);
+      size_t hint = vrs::InputSurface::kNoFace, serial_hint = hint;
+      for (int i = 0; i < 300; ++i) {
+        const Vec3 x{u(rng), u(rng), u(rng)};
+        double d2, serial_d2;
+        Vec3 n, serial_n;
+        ASSERT_TRUE(input.nearest(x, eval, d2, n, &hint));
+        ASSERT_TRUE(serial.nearest(x, eval, serial_d2, serial_n, &serial_hint));
+        ASSERT_EQ(d2, serial_d2) << "point " << i;
+        ASSERT_EQ(hint, serial_hint) << "point " << i;
+      }
     }
   }
 }
