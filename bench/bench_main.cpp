@@ -8,11 +8,11 @@
 //             bounding-box diagonal) and no face target: faces reached, measured error, and
 //             our certified bound (rows: mesh,input_faces,bound,method,output_faces,seconds,
 //             error_max,error_mean,certified)
-//   vrs_bench --serial MESH RATIO [THREADS]    our default run instrumented: "seconds
-//                                             parallel_seconds serial_fraction by_chunks_8
-//                                             by_chunks_16" (the time in loops spread over the
-//                                             threads, the rest, and on one thread the speed-up
-//                                             its loops' chunks allow on 8 and 16)
+//   vrs_bench --serial MESH RATIO [THREADS [PART_VERTICES]]
+//             our default run (or with parts of PART_VERTICES vertices) instrumented: "seconds
+//             parallel_seconds serial_fraction by_chunks_8 by_chunks_16" (the time in loops
+//             spread over the threads, the rest, and on one thread the speed-up its loops'
+//             chunks allow on 8 and 16)
 //   vrs_bench --loop MESH LEVELS OUT.ply       Loop subdivision (large inputs)
 //   vrs_bench --terrain K OUT.ply              (2^K + 1)^2 fractal terrain
 //   vrs_bench --streamed-terrain N OUT.ply     N^2 terrain written a row at a time (any size)
@@ -246,6 +246,7 @@ int serial(int argc, char** argv) {
   vrs::Options o;
   o.target.ratio = std::atof(argv[3]);
   o.threads = argc > 4 ? std::atoi(argv[4]) : 1;
+  if (argc > 5) o.part_vertices = std::atoi(argv[5]); // another part size than the default
   const vrs::Report r = vrs::simplify(m, o);
   if (!r.ok) {
     std::fprintf(stderr, "vrs_bench: %s\n", r.message.c_str());
