@@ -338,8 +338,9 @@ void Simplifier::slide() {
         flags_[ring.v[i]] |= kFlagTaken;
       round.push_back({v, kNone, ring});
     }
-    workers_.for_each(round.size(),
-                      [&](size_t i) { round[i].u = slide_choice(round[i].v, round[i].ring); });
+    // One fan a chunk (0.2-0.3 ms each): the last rounds hold few fans.
+    workers_.for_each(
+        round.size(), [&](size_t i) { round[i].u = slide_choice(round[i].v, round[i].ring); }, 1);
     for (Slot& s : round) {
       flags_[s.v] &= uint8_t(~kFlagTaken);
       for (int i = 0; i < s.ring.verts; ++i)
@@ -471,11 +472,17 @@ void Simplifier::slide_index(const std::vector<uint32_t>& fans) {
     slide_first_[k + 1] += slide_first_[k];
   slide_faces_.resize(slide_first_.back());
   std::vector<uint32_t> at(slide_first_.begin(), slide_first_.end() - 1);
-  each_corner([&](uint32_t face, size_t k) {
-    const uint32_t* q = f + 3 * size_t(face);
-    const Vec3 a = eval_.position(q[0]), b = eval_.position(q[1]), d = eval_.position(q[2]);
-    slide_area_[k] += float(length(cross(b - a, d - a)) / 6);
-    slide_faces_[at[k]++] = face;
+  each_corner([&](uint32_t face, size_t k) { slide_faces_[at[k]++] = face; });
+  // Each slot's area from its faces in their order (the sum one thread made), the slots on the
+  // workers (bunny00 x2 to 10 %, 16 cores projected: 10.9-11.05x before, with one fan a
+  // chunk 11.1-11.2x).
+  for_each_block(&workers_, slots, 4096, [&](size_t begin, size_t end) {
+    for (size_t k = begin; k < end; ++k)
+      for (uint32_t i = slide_first_[k]; i < slide_first_[k + 1]; ++i) {
+        const uint32_t* q = f + 3 * size_t(slide_faces_[i]);
+        const Vec3 a = eval_.position(q[0]), b = eval_.position(q[1]), d = eval_.position(q[2]);
+        slide_area_[k] += float(length(cross(b - a, d - a)) / 6);
+      }
   });
 }
 
