@@ -7,13 +7,12 @@
 
 namespace vrs {
 
-void fan_area_changes(Vec3 c, const Ring& ring, const Patch& patch,
+void fan_area_changes(const Ring& ring, const Patch& patch,
                       std::array<double, kMaxRing + 1>& change) {
   const int k = ring.verts;
-  const auto& q = patch.q;                         // the ring's positions
-  std::array<double, kMaxRing> old_area, new_area; // each face's area, made once
-  for (int f = 0; f < ring.faces; ++f)
-    old_area[f] = triangle_area(c, q[f], q[(f + 1) % k]);
+  const auto& q = patch.q;                // the ring's positions
+  const auto& old_area = patch.face_area; // each old face's, made with the plan
+  std::array<double, kMaxRing> new_area;  // each new face's, made once
   for (int t = 0; t < patch.count; ++t)
     new_area[t] = triangle_area(q[patch.tri[t][0]], q[patch.tri[t][1]], q[patch.tri[t][2]]);
   for (int i = 0; i < k; ++i) {

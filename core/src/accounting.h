@@ -10,10 +10,10 @@
 
 namespace vrs {
 
-// How the removal of the vertex at `c` changes the area of the faces around each ring vertex
-// i: its faces i - 1 and i are replaced by the patch's triangles at i (`patch.q`: the ring's
+// How a removal changes the area of the faces around each ring vertex i: its faces i - 1 and i
+// (`patch.face_area`) are replaced by the patch's triangles at i (`patch.q`: the ring's
 // positions).
-void fan_area_changes(Vec3 c, const Ring& ring, const Patch& patch,
+void fan_area_changes(const Ring& ring, const Patch& patch,
                       std::array<double, kMaxRing + 1>& change);
 
 } // namespace vrs

@@ -43,6 +43,17 @@ void fill_fan(const Ring& ring, int apex, Patch& out) {
 
 } // namespace
 
+int fan_candidate(const Ring& ring, const Patch& patch) {
+  const int k = ring.verts;
+  if (k < 3 || patch.count != k - 2) return -1;
+  const int apex = patch.tri[0][0];
+  for (int i = 1; i + 1 < k; ++i) {
+    const auto& t = patch.tri[i - 1];
+    if (t[0] != apex || t[1] != (apex + i) % k || t[2] != (apex + i + 1) % k) return -1;
+  }
+  return k == 3 ? (apex == 0 ? 1 : -1) : 1 + apex; // a three-vertex ring: one fan, apex 0
+}
+
 bool fill_triangles(const Ring& ring, OpenRing open, int c, Patch& out) {
   if (ring.verts == 2) { // one triangle cut off: its edge between the two neighbours stays
     out.count = 0;

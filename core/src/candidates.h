@@ -24,6 +24,10 @@ inline int candidate_count(const Ring& ring, bool fans) {
   return fans && ring.verts > 2 ? 1 + (ring.verts == 3 ? 1 : ring.verts) : 1;
 }
 
+// The fan candidate whose triangles `patch` holds exactly as fill_triangles writes them (the
+// projection of a convex ring is the fan of its best-shaped apex), or -1.
+int fan_candidate(const Ring& ring, const Patch& patch);
+
 // Writes candidate `c` into `out` (tri and from; the projection `out.p`, `out.q` and
 // `out.normal` must be set). False when the projection folds (candidate 0 only).
 bool fill_candidate(const Ring& ring, OpenRing open, int c, Patch& out);

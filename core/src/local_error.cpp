@@ -66,14 +66,9 @@ double distance_to_segment(Vec3 p, Vec3 a, Vec3 b) {
 }
 
 OldFan::OldFan(uint32_t v, const Ring& ring, const Patch& patch, const Evaluator& eval)
-    : ring_(ring), patch_(patch), c_(eval.position(v)) {
-  const int k = ring.verts;
-  const auto& q = patch.q;
-  for (int i = 0; i < ring.faces; ++i) {
-    Vec3 x = cross(q[i] - c_, q[(i + 1) % k] - c_);
-    area_ += 0.5 * length(x);
-    n_[i] = normalized(x);
-  }
+    : ring_(ring), patch_(patch), c_(eval.position(v)), n_(patch.face_n) {
+  for (int i = 0; i < ring.faces; ++i)
+    area_ += patch.face_area[i];
 }
 
 double OldFan::to_face2(Vec3 x, int i, double best) const {

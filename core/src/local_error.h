@@ -20,8 +20,9 @@ double point_triangle_distance2(const Vec3& p, const Vec3& a, const Vec3& b,
 // Distance from p to the segment (a, b).
 double distance_to_segment(Vec3 p, Vec3 a, Vec3 b);
 
-// The fan of triangles around a removed vertex, as planned (`patch` holds the ring's positions
-// and projection): squared distances from points of a new patch to it.
+// The fan of triangles around a removed vertex, as planned (`patch` holds the ring's positions,
+// its projection and the replaced faces, set_replaced_faces): squared distances from points of a
+// new patch to it.
 class OldFan {
  public:
   OldFan(uint32_t v, const Ring& ring, const Patch& patch, const Evaluator& eval);
@@ -37,7 +38,7 @@ class OldFan {
   const Patch& patch_;
   Vec3 c_;
   double area_ = 0;
-  UnsetArray<Vec3, kMaxRing> n_; // unit normals: the plane distance skips most exact queries
+  const UnsetArray<Vec3, kMaxRing>& n_; // unit normals: the plane distance skips most queries
 };
 
 // Squared distance to the old fan of the new triangle (a, b, c) (ring positions): the largest

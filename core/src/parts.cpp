@@ -144,8 +144,8 @@ void Simplifier::run_part(Part& part, double threshold, size_t cap, const uint8_
     p.v = v;
     p.from = -1;
     const uint8_t hint = chosen_[v];
-    plan_removal(p);
-    if (wait.wanted()) { // the plan is thrown away; the part waits for the next round
+    plan_removal(p, /*areas=*/false); // made below for a removal (most plans are pushed back)
+    if (wait.wanted()) {              // the plan is thrown away; the part waits for the next round
       chosen_[v] = hint;
       part.queue.push(v, factor_[v]);
       part.waits = true;
@@ -185,6 +185,7 @@ void Simplifier::run_part(Part& part, double threshold, size_t cap, const uint8_
       part.full = true;
       break;
     }
+    fan_area_changes(ring, p.patch, p.area_change);
     flags_[v] |= kFlagRemoved;
     part.faces_removed += size_t(ring.faces - p.patch.count);
     ++part.removed;

@@ -19,6 +19,7 @@ void project(uint32_t v, const Ring& ring, Vec3 n, const Evaluator& eval, Patch&
     out.p[i] = {dot(d, out.u), dot(d, out.w)};
   }
   out.normal = n;
+  set_replaced_faces(c, ring, out);
 }
 
 } // namespace
@@ -70,9 +71,7 @@ Reject Planner::plan(uint32_t v, const Ring& ring, Vec3 n, Patch& out, double& c
   const int k = ring.verts;
   if (k < 3 && !(k == 2 && !ring.closed())) return RejectFold;
   project(v, ring, n, *eval_, out);
-  // Once the input judges fold-overs, the shape veto no longer reads the faces replaced.
-  FaceNormals replaced;
-  if (!limits_->folds_judged_by_input) replaced_face_normals(v, ring, out, *eval_, replaced);
+  const FaceNormals& replaced = out.face_n;
   auto vetoed = [&](bool plane_angle) {
     // Topology first (it cannot change with the projection), then shape.
     Reject why = check_topology ? veto_topology(ring, out, open, *topo_, tris_) : RejectCount;
@@ -136,8 +135,17 @@ Reject Planner::plan(uint32_t v, const Ring& ring, Vec3 n, Patch& out, double& c
   std::array<uint8_t, kMaxRing + 2> listed;
   std::array<std::array<uint8_t, 3>, kMaxRing> projected;
   int projected_count = -1, m = 0;
+  // The fan the projection made, when it made one (a convex ring): that fan's candidate has
+  // the same triangles, in the same order, and so the same estimate.
+  int twin = -1;
   double best = std::numeric_limits<double>::infinity();
   for (int c = 0; c < candidates; ++c) {
+    if (c == twin) {
+      estimate[c] = estimate[0];
+      complete[c] = true;
+      listed[m++] = uint8_t(c);
+      continue;
+    }
     if (!fill_triangles(ring, open, c, out)) {
       // On a fixed plane a fan triangulates the projected ring only where the ring is the
       // simple polygon the projection checks (then each of its triangles must face the plane).
@@ -147,6 +155,7 @@ Reject Planner::plan(uint32_t v, const Ring& ring, Vec3 n, Patch& out, double& c
     if (c == 0) {
       projected = out.tri;
       projected_count = out.count;
+      if (candidates > 1) twin = fan_candidate(ring, out);
     }
     complete[c] = true;
     estimate[c] = candidates > 1 ? price_.estimate(v, ring, out, best, complete[c]) : 0.0;

@@ -35,7 +35,7 @@ void TakenMarks::clear(std::vector<uint8_t>& flags) {
 // accounting will read of an accepted plan (found then in the shared cache). Together they
 // saved about a sixth of the time on one thread at 1.2 M faces, and the last one an eighth
 // of the two-thread time at 4.8 M.
-void Simplifier::plan_removal(Planned& p) const {
+void Simplifier::plan_removal(Planned& p, bool areas) const {
   const bool local = opt_.priority == Priority::LocalError;
   const uint32_t* tris = mesh_.triangles.data();
   p.stale = flags_[p.v] & kFlagStale;
@@ -59,8 +59,7 @@ void Simplifier::plan_removal(Planned& p) const {
   p.why = plan(p.v, p.ring, e, p.patch, cost, /*check_topology=*/true, p.stale && local,
                /*hinted=*/!p.stale);
   p.priority = local ? std::max(cost, chord) : e.factor;
-  if (p.why == RejectCount && lazy_)
-    fan_area_changes(eval_.position(p.v), p.ring, p.patch, p.area_change);
+  if (areas && p.why == RejectCount && lazy_) fan_area_changes(p.ring, p.patch, p.area_change);
 }
 
 template <class Queue> void Simplifier::plan_batch(size_t count, const Queue& queue) {

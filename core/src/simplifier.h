@@ -151,8 +151,9 @@ class Simplifier {
                          double cap, bool& complete);
 
   // --- scheduler.cpp
-  // Plans p.v's removal against today's mesh (reads only: the workers call it).
-  void plan_removal(Planned& p) const;
+  // Plans p.v's removal against today's mesh (reads only: the workers call it). `areas`: the
+  // fan area changes made too (Planned::area_change; else the caller makes them if it commits).
+  void plan_removal(Planned& p, bool areas = true) const;
   // Plans batch_ids_[0, count) into batch_ on the workers against today's mesh.
   template <class Queue> void plan_batch(size_t count, const Queue& queue);
 

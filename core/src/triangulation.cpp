@@ -11,6 +11,14 @@ int triangle_under(const Patch& patch, Vec2 s) {
   return -1;
 }
 
+void set_replaced_faces(Vec3 c, const Ring& ring, Patch& patch) {
+  for (int i = 0; i < ring.faces; ++i) {
+    const Vec3 x = cross(patch.q[i] - c, patch.q[(i + 1) % ring.verts] - c);
+    patch.face_area[i] = 0.5 * length(x);
+    patch.face_n[i] = normalized(x);
+  }
+}
+
 bool is_convex(const Vec2* p, int k) {
   for (int i = 0; i < k; ++i)
     if (!(orient2d(p[i], p[(i + 1) % k], p[(i + 2) % k]) > 0)) return false;
@@ -18,13 +26,27 @@ bool is_convex(const Vec2* p, int k) {
 }
 
 void triangulate_fan(const Vec2*, const Vec3* q, Vec3 n, int k, Patch& out) {
+  // triangle_score's terms shared: the ring's edges once, an apex's spokes as its triangles
+  // come (each spoke is in two of them). The same arithmetic, a third fewer instructions.
+  std::array<double, kMaxRing + 1> edge2;
+  for (int j = 0; j < k; ++j) {
+    const Vec3 e = q[(j + 1) % k] - q[j];
+    edge2[j] = dot(e, e);
+  }
   int best = 0;
   double best_worst = -1;
   for (int a = 0; a < k; ++a) {
     double worst = 1;
+    Vec3 spoke = q[(a + 1) % k] - q[a];
+    double spoke2 = dot(spoke, spoke);
     // A fan no better than the best so far cannot win: its worst triangle only falls.
-    for (int i = 1; i + 1 < k && worst > best_worst; ++i)
-      worst = std::min(worst, triangle_score(q[a], q[(a + i) % k], q[(a + i + 1) % k], n));
+    for (int i = 1; i + 1 < k && worst > best_worst; ++i) {
+      const int j = (a + i) % k;
+      const Vec3 next = q[(j + 1) % k] - q[a];
+      const double next2 = dot(next, next); // |a - c|² of triangle_score, the same product
+      worst = std::min(worst, score_of(dot(cross(spoke, next), n), spoke2 + edge2[j] + next2));
+      spoke = next, spoke2 = next2;
+    }
     if (worst > best_worst) {
       best_worst = worst;
       best = a;

@@ -22,6 +22,11 @@ struct Patch {
   Vec3 normal, u, w;
   UnsetArray<Vec3, kMaxRing + 1> q;
   UnsetArray<Vec2, kMaxRing + 1> p;
+  // The faces the patch replaces, ring face i = (removed vertex, ring[i], ring[i + 1]): unit
+  // normals and areas, made once with the projection (set_replaced_faces) for the shape
+  // veto, the price and the accounting, which each made them before.
+  UnsetArray<Vec3, kMaxRing> face_n;
+  UnsetArray<double, kMaxRing> face_area;
   // With an error bound tracked (error_bound.h): each new triangle's certified bound.
   std::array<float, kMaxRing> bound;
   // Set by the shape veto (vetoes.h): why some corner's input normal cannot vouch for its new
@@ -42,6 +47,10 @@ enum CornerDoubt : uint8_t {
 
 bool is_convex(const Vec2* p, int k);
 
+// Patch::face_n and face_area of the ring's faces around the removed vertex at c (the ring's
+// positions in `patch.q`).
+void set_replaced_faces(Vec3 c, const Ring& ring, Patch& patch);
+
 // The new triangle whose projection on the plan's plane holds s (relative to the removed
 // vertex), or -1 when s lies outside the patch.
 int triangle_under(const Patch& patch, Vec2 s);
@@ -50,11 +59,14 @@ int triangle_under(const Patch& patch, Vec2 s);
 // projection normal n. Shape alone would happily pick a well-shaped triangle standing across
 // the surface (a chord through the solid); facing n keeps the patch on the surface.
 // Inline: the fans' and ears' inner loops call it for every triangle they weigh.
-inline double triangle_score(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& n) {
-  // quality * facing = (2√3 |x| / Σe²) * (x·n / |x|) with x = (b-a)×(c-a): no square root.
-  double facing = dot(cross(b - a, c - a), n);
-  double sum = dot(b - a, b - a) + dot(c - b, c - b) + dot(a - c, a - c);
+// quality * facing = (2√3 |x| / Σe²) * (x·n / |x|) with x = (b-a)×(c-a): no square root.
+// `facing` = x·n, `sum` = Σe² (|b-a|² + |c-b|² + |a-c|², in that order).
+inline double score_of(double facing, double sum) {
   return facing > 0 && sum > 0 ? 3.4641016151377544 * facing / sum : 0.0;
+}
+inline double triangle_score(const Vec3& a, const Vec3& b, const Vec3& c, const Vec3& n) {
+  return score_of(dot(cross(b - a, c - a), n),
+                  dot(b - a, b - a) + dot(c - b, c - b) + dot(a - c, a - c));
 }
 
 // Fan from the apex whose worst triangle scores best (3D positions `q`, projection normal n).

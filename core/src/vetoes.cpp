@@ -48,13 +48,6 @@ Reject veto_topology(const Ring& ring, const Patch& patch, OpenRing open, const 
   return RejectCount;
 }
 
-void replaced_face_normals(uint32_t v, const Ring& ring, const Patch& patch, const Evaluator& eval,
-                           FaceNormals& out) {
-  const Vec3 c = eval.position(v);
-  for (int i = 0; i < ring.faces; ++i)
-    out[i] = normalized(cross(patch.q[i] - c, patch.q[(i + 1) % ring.verts] - c));
-}
-
 Reject veto_triangle(const Ring& ring, const Patch& patch, std::array<uint8_t, 3> tri,
                      const FaceNormals& old_n, const float* surface_normals,
                      const RemovalLimits& limits, bool plane_angle, uint8_t* doubts) {

@@ -56,16 +56,13 @@ Reject veto_topology(const Ring& ring, const Patch& patch, OpenRing open, const 
 // it; see limits.agreeing_corners), none turned over against the face(s) it replaces, and, when
 // `plane_angle` (fillings made on the projection plane), none steeper than limits.min_normal_cos
 // to that plane.
-// `replaced`: the unit normals of the ring's faces (replaced_face_normals), the same for every
-// candidate of one plan, so made once; not read (and left unmade) once
-// limits.folds_judged_by_input.
+// `replaced`: the unit normals of the faces the patch replaces (a plan's Patch::face_n, the same
+// for every candidate of one plan); not read once limits.folds_judged_by_input.
 // `doubts` (when given, of a patch no veto refuses): the CornerDoubt bits of corners that cannot
 // vouch for their triangle, their normal more than 45 degrees from it or their faces spreading
 // more than 30 degrees about them (a crease, a rim, a thin wall): there the planner asks the
 // input itself. Told here, where the corners are compared anyway, not by a second pass.
 using FaceNormals = UnsetArray<Vec3, kMaxRing>;
-void replaced_face_normals(uint32_t v, const Ring& ring, const Patch& patch, const Evaluator& eval,
-                           FaceNormals& out);
 Reject veto_shape(const Ring& ring, const Patch& patch, const FaceNormals& replaced,
                   const float* surface_normals, const RemovalLimits& limits, bool plane_angle,
                   uint8_t* doubts = nullptr);

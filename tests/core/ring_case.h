@@ -34,5 +34,6 @@ inline vrs::Patch projected(const RingCase& s, uint32_t v, vrs::Vec3 n) {
     vrs::Vec3 d = p.q[i] - vrs::Vec3{x[3 * v], x[3 * v + 1], x[3 * v + 2]};
     p.p[i] = {dot(d, p.u), dot(d, p.w)};
   }
+  vrs::set_replaced_faces({x[3 * v], x[3 * v + 1], x[3 * v + 2]}, s.ring, p);
   return p;
 }

@@ -30,8 +30,9 @@ TEST(Accounting, FanAreaChangesAddUpToTheFacesGainedAndLostAtEachCorner) {
     regular_ring(6, ring, patch);
     ASSERT_TRUE(fill_candidate(ring, OpenRing::Border, 1, patch)); // the fan from ring vertex 0
     const Vec3 c{0, 0, height};
+    set_replaced_faces(c, ring, patch);
     std::array<double, kMaxRing + 1> change;
-    fan_area_changes(c, ring, patch, change);
+    fan_area_changes(ring, patch, change);
     // Each old face counts at its two ring corners, each new one at its three.
     double old_area = 0, new_area = 0, sum = 0;
     for (int i = 0; i < 6; ++i)
@@ -63,7 +64,8 @@ TEST(Accounting, TheEndsOfAnOpenRingLoseOnlyTheirOneOldFace) {
   ASSERT_EQ(patch.count, 1);
   std::array<double, kMaxRing + 1> change;
   const Vec3 c{0, 0, 0};
-  fan_area_changes(c, ring, patch, change);
+  set_replaced_faces(c, ring, patch);
+  fan_area_changes(ring, patch, change);
   const double whole = triangle_area(patch.q[0], patch.q[1], patch.q[2]);
   EXPECT_NEAR(change[0], whole - triangle_area(c, patch.q[0], patch.q[1]), 1e-12);
   EXPECT_NEAR(change[2], whole - triangle_area(c, patch.q[1], patch.q[2]), 1e-12);

@@ -12,16 +12,6 @@
 
 using namespace vrs;
 
-namespace {
-
-FaceNormals replaced(const RingCase& s, const Patch& p, const Evaluator& eval) {
-  FaceNormals n;
-  replaced_face_normals(6, s.ring, p, eval, n);
-  return n;
-}
-
-} // namespace
-
 // The arrow-shaped ring: seen from ring vertices 2 and 4 the notch at 3 is behind an edge, so
 // their fans hold a triangle turned over; from the notch itself every triangle is fine.
 TEST(Vetoes, FoldOverRefusesAFanTurnedOverTheFaceItReplaces) {
@@ -39,20 +29,17 @@ TEST(Vetoes, FoldOverRefusesAFanTurnedOverTheFaceItReplaces) {
   Patch p = projected(s, 6, {0, 0, 1});
   for (int apex : {2, 4}) {
     ASSERT_TRUE(fill_candidate(s.ring, OpenRing::Border, 1 + apex, p));
-    EXPECT_EQ(veto_shape(s.ring, p, replaced(s, p, eval), s.normals.data(), limits, false),
-              RejectFoldOver)
+    EXPECT_EQ(veto_shape(s.ring, p, p.face_n, s.normals.data(), limits, false), RejectFoldOver)
         << "apex " << apex;
   }
   ASSERT_TRUE(fill_candidate(s.ring, OpenRing::Border, 1 + 3, p));
-  EXPECT_EQ(veto_shape(s.ring, p, replaced(s, p, eval), s.normals.data(), limits, false),
-            RejectCount);
+  EXPECT_EQ(veto_shape(s.ring, p, p.face_n, s.normals.data(), limits, false), RejectCount);
   // In the eased passes the input judges fold-overs (InputSurface::folds), not the faces
   // replaced: the turned-over fans pass here and are refused (or not) by the input.
   limits.folds_judged_by_input = true;
   for (int apex : {2, 4}) {
     ASSERT_TRUE(fill_candidate(s.ring, OpenRing::Border, 1 + apex, p));
-    EXPECT_EQ(veto_shape(s.ring, p, replaced(s, p, eval), s.normals.data(), limits, false),
-              RejectCount)
+    EXPECT_EQ(veto_shape(s.ring, p, p.face_n, s.normals.data(), limits, false), RejectCount)
         << "apex " << apex;
   }
   limits.folds_judged_by_input = false;
@@ -61,12 +48,10 @@ TEST(Vetoes, FoldOverRefusesAFanTurnedOverTheFaceItReplaces) {
     s.normals[i + 2] = 1.0f;
   limits.agreeing_corners = 3;
   ASSERT_TRUE(fill_candidate(s.ring, OpenRing::Border, 1 + 2, p));
-  EXPECT_EQ(veto_shape(s.ring, p, replaced(s, p, eval), s.normals.data(), limits, false),
-            RejectFlip);
+  EXPECT_EQ(veto_shape(s.ring, p, p.face_n, s.normals.data(), limits, false), RejectFlip);
   // The corners' test still holds when the input judges fold-overs.
   limits.folds_judged_by_input = true;
-  EXPECT_EQ(veto_shape(s.ring, p, replaced(s, p, eval), s.normals.data(), limits, false),
-            RejectFlip);
+  EXPECT_EQ(veto_shape(s.ring, p, p.face_n, s.normals.data(), limits, false), RejectFlip);
 }
 
 // The corners tell whether they can vouch for an accepted patch, and why not: flat and alike
@@ -82,9 +67,8 @@ TEST(Vetoes, CornersSayWhenTheyCannotVouchForAPatch) {
   ASSERT_TRUE(fill_candidate(s.ring, OpenRing::Border, 1, p));
   auto doubts = [&] {
     uint8_t d = 0;
-    EXPECT_EQ(
-        veto_shape(s.ring, p, replaced(s, p, eval), s.normals.data(), RemovalLimits{}, false, &d),
-        RejectCount);
+    EXPECT_EQ(veto_shape(s.ring, p, p.face_n, s.normals.data(), RemovalLimits{}, false, &d),
+              RejectCount);
     return int(d);
   };
   EXPECT_EQ(doubts(), 0);
@@ -122,7 +106,7 @@ TEST(Vetoes, SliverIsDegenerate) {
   Evaluator eval(Mode::Surface3D, {0, 0, 1}, s.mesh.positions.data());
   Patch p = projected(s, 6, {0, 0, 1});
   ASSERT_TRUE(fill_candidate(s.ring, OpenRing::Border, 1, p));
-  EXPECT_EQ(veto_shape(s.ring, p, replaced(s, p, eval), s.normals.data(), RemovalLimits{}, false),
+  EXPECT_EQ(veto_shape(s.ring, p, p.face_n, s.normals.data(), RemovalLimits{}, false),
             RejectDegenerate);
 }
 
