@@ -15,7 +15,7 @@ bool fill_projection(const Ring& ring, OpenRing open, Patch& out) {
   // The old fan must project without folds: the ring is then a star-shaped simple polygon
   // around the vertex and any triangulation of it covers the same region.
   for (int i = 0; i < ring.faces; ++i)
-    if (!(orient2d(o, p[i], p[(i + 1) % k]) > 0)) return false;
+    if (!(orient2d(o, p[i], p[wrap(i + 1, k)]) > 0)) return false;
   if (!ring.closed()) {
     // Open fan: cutting the vertex off must leave a simple polygon. At a convex corner the
     // chain must lie beyond the chord; at a reflex one (seams only) the chord lies in the
@@ -38,7 +38,7 @@ void fill_fan(const Ring& ring, int apex, Patch& out) {
   const int k = ring.verts;
   out.count = 0;
   for (int i = 1; i + 1 < k; ++i)
-    out.tri[out.count++] = {uint8_t(apex), uint8_t((apex + i) % k), uint8_t((apex + i + 1) % k)};
+    out.tri[out.count++] = {uint8_t(apex), uint8_t(wrap(apex + i, k)), uint8_t(wrap(apex + i + 1, k))};
 }
 
 } // namespace
@@ -49,7 +49,7 @@ int fan_candidate(const Ring& ring, const Patch& patch) {
   const int apex = patch.tri[0][0];
   for (int i = 1; i + 1 < k; ++i) {
     const auto& t = patch.tri[i - 1];
-    if (t[0] != apex || t[1] != (apex + i) % k || t[2] != (apex + i + 1) % k) return -1;
+    if (t[0] != apex || t[1] != wrap(apex + i, k) || t[2] != wrap(apex + i + 1, k)) return -1;
   }
   return k == 3 ? (apex == 0 ? 1 : -1) : 1 + apex; // a three-vertex ring: one fan, apex 0
 }

@@ -117,7 +117,7 @@ Evaluation Evaluator::evaluate(uint32_t v, const Ring& ring, bool boundary_line)
   // the triangles' own orientation.
   Vec3 fan;
   for (int i = 0; i < ring.faces; ++i)
-    fan = fan + cross(p[i] - c, p[(i + 1) % k] - c);
+    fan = fan + cross(p[i] - c, p[wrap(i + 1, k)] - c);
 
   e.fan_normal = normalized(fan);
   Vec3 n;

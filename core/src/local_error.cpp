@@ -75,7 +75,7 @@ double OldFan::to_face2(Vec3 x, int i, double best) const {
   const double h = dot(x - c_, n_[i]);
   if (h * h >= best) return best;
   return std::min(best,
-                  point_triangle_distance2(x, c_, patch_.q[i], patch_.q[(i + 1) % ring_.verts]));
+                  point_triangle_distance2(x, c_, patch_.q[i], patch_.q[wrap(i + 1, ring_.verts)]));
 }
 
 double OldFan::distance2(Vec3 x) const {
@@ -88,11 +88,11 @@ double OldFan::distance2(Vec3 x) const {
   const Vec2 s{dot(x - c_, patch_.u), dot(x - c_, patch_.w)};
   double d = std::numeric_limits<double>::infinity();
   for (int i = 0; i < ring_.faces; ++i) {
-    int j = (i + 1) % k;
+    const int j = wrap(i + 1, k);
     if (!(orient2d(o, p[i], s) >= 0 && orient2d(o, s, p[j]) >= 0 && orient2d(p[i], p[j], s) >= 0))
       continue;
     d = point_triangle_distance2(x, c_, patch_.q[i], patch_.q[j]);
-    if (i > 0 || ring_.closed()) d = to_face2(x, (i + k - 1) % k, d);
+    if (i > 0 || ring_.closed()) d = to_face2(x, wrap(i + k - 1, k), d);
     if (j < ring_.faces) d = to_face2(x, j, d);
     return d;
   }
@@ -106,7 +106,7 @@ bool OldFan::opposes_near(Vec3 x, Vec3 n, double slack) const {
   std::array<double, kMaxRing> d;
   double nearest = std::numeric_limits<double>::infinity();
   for (int i = 0; i < ring_.faces; ++i) {
-    d[i] = std::sqrt(point_triangle_distance2(x, c_, patch_.q[i], patch_.q[(i + 1) % k]));
+    d[i] = std::sqrt(point_triangle_distance2(x, c_, patch_.q[i], patch_.q[wrap(i + 1, k)]));
     nearest = std::min(nearest, d[i]);
   }
   for (int i = 0; i < ring_.faces; ++i)
@@ -219,7 +219,7 @@ double moved_surface(const OldFan& fan, const Ring& ring, const Patch& patch, Ve
   auto to_patch = [&](Vec3 x) { return std::sqrt(to_patch2(patch, x)); };
   double moved = 0;
   for (int i = 0; i < ring.faces; ++i) { // the old face's centroid and a point nearer c
-    const Vec3 a = q[i], b = q[(i + 1) % ring.verts];
+    const Vec3 a = q[i], b = q[wrap(i + 1, ring.verts)];
     const double area = 0.5 * length(cross(a - c, b - c));
     moved += area * 0.5 * (to_patch((a + b + c) * (1.0 / 3)) + to_patch((a + b + c * 2.0) * 0.25));
   }

@@ -69,19 +69,26 @@ size_t PartQueue::count_at_most(double f) const {
   return count;
 }
 
+// Four children a node: half the levels of a binary heap, and a node's children side by side
+// in one or two cache lines. The order is the entries' (price, then push order): the same pops
+// whatever the heap's shape.
 void PartQueue::sift_up(size_t i) {
   const Entry e = heap_[i];
-  for (; i > 0 && less(e, heap_[(i - 1) / 2]); i = (i - 1) / 2)
-    place(i, heap_[(i - 1) / 2]);
+  for (; i > 0 && less(e, heap_[(i - 1) / 4]); i = (i - 1) / 4)
+    place(i, heap_[(i - 1) / 4]);
   place(i, e);
 }
 
 void PartQueue::sift_down(size_t i) {
   const Entry e = heap_[i];
-  for (size_t c; (c = 2 * i + 1) < heap_.size(); i = c) {
-    if (c + 1 < heap_.size() && less(heap_[c + 1], heap_[c])) ++c;
+  const size_t n = heap_.size();
+  for (size_t first; (first = 4 * i + 1) < n;) {
+    size_t c = first;
+    for (size_t j = first + 1; j < std::min(first + 4, n); ++j)
+      if (less(heap_[j], heap_[c])) c = j;
     if (!less(heap_[c], e)) break;
     place(i, heap_[c]);
+    i = c;
   }
   place(i, e);
 }

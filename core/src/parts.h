@@ -40,7 +40,7 @@ Parts make_parts(const std::vector<uint32_t>& tris, const Topology& topo, uint32
                  uint32_t shift, const std::vector<uint32_t>& sibling = {},
                  Workers* workers = nullptr);
 
-// A part's own queue: an exact heap over the part's range of vertices, 12 bytes an entry
+// A part's own queue: an exact (4-ary) heap over the part's range of vertices, 12 bytes an entry
 // (the whole mesh's hash table spans all vertices: one a part would cost parts x vertices).
 // Ties go by insertion order.
 class PartQueue {

@@ -30,7 +30,7 @@ bool star_direction(uint32_t v, const Ring& ring, const Evaluator& eval, Vec3& o
   UnsetArray<Vec3, kMaxRing> n;
   Vec3 area, unit;
   for (int i = 0; i < ring.faces; ++i) {
-    Vec3 a = cross(eval.position(ring.v[i]) - c, eval.position(ring.v[(i + 1) % k]) - c);
+    Vec3 a = cross(eval.position(ring.v[i]) - c, eval.position(ring.v[wrap(i + 1, k)]) - c);
     n[i] = normalized(a);
     area = area + a;
     unit = unit + n[i];

@@ -38,6 +38,12 @@ struct Ring {
   bool closed() const { return verts == faces; }
 };
 
+// x mod k for 0 <= x < 2k: ring positions go round without a division (an integer division
+// is tens of cycles, and the planning's inner loops took one per triangle).
+inline int wrap(int x, int k) {
+  return x < k ? x : x - k;
+}
+
 inline void prefetch(const void* p) {
 #if defined(__GNUC__)
   __builtin_prefetch(p);

@@ -13,7 +13,7 @@ int triangle_under(const Patch& patch, Vec2 s) {
 
 void set_replaced_faces(Vec3 c, const Ring& ring, Patch& patch) {
   for (int i = 0; i < ring.faces; ++i) {
-    const Vec3 x = cross(patch.q[i] - c, patch.q[(i + 1) % ring.verts] - c);
+    const Vec3 x = cross(patch.q[i] - c, patch.q[wrap(i + 1, ring.verts)] - c);
     patch.face_area[i] = 0.5 * length(x);
     patch.face_n[i] = normalized(x);
   }
@@ -21,7 +21,7 @@ void set_replaced_faces(Vec3 c, const Ring& ring, Patch& patch) {
 
 bool is_convex(const Vec2* p, int k) {
   for (int i = 0; i < k; ++i)
-    if (!(orient2d(p[i], p[(i + 1) % k], p[(i + 2) % k]) > 0)) return false;
+    if (!(orient2d(p[i], p[wrap(i + 1, k)], p[wrap(i + 2, k)]) > 0)) return false;
   return true;
 }
 
@@ -30,19 +30,19 @@ void triangulate_fan(const Vec2*, const Vec3* q, Vec3 n, int k, Patch& out) {
   // come (each spoke is in two of them). The same arithmetic, a third fewer instructions.
   std::array<double, kMaxRing + 1> edge2;
   for (int j = 0; j < k; ++j) {
-    const Vec3 e = q[(j + 1) % k] - q[j];
+    const Vec3 e = q[wrap(j + 1, k)] - q[j];
     edge2[j] = dot(e, e);
   }
   int best = 0;
   double best_worst = -1;
   for (int a = 0; a < k; ++a) {
     double worst = 1;
-    Vec3 spoke = q[(a + 1) % k] - q[a];
+    Vec3 spoke = q[wrap(a + 1, k)] - q[a];
     double spoke2 = dot(spoke, spoke);
     // A fan no better than the best so far cannot win: its worst triangle only falls.
     for (int i = 1; i + 1 < k && worst > best_worst; ++i) {
-      const int j = (a + i) % k;
-      const Vec3 next = q[(j + 1) % k] - q[a];
+      const int j = wrap(a + i, k);
+      const Vec3 next = q[wrap(j + 1, k)] - q[a];
       const double next2 = dot(next, next); // |a - c|² of triangle_score, the same product
       worst = std::min(worst, score_of(dot(cross(spoke, next), n), spoke2 + edge2[j] + next2));
       spoke = next, spoke2 = next2;
@@ -54,7 +54,8 @@ void triangulate_fan(const Vec2*, const Vec3* q, Vec3 n, int k, Patch& out) {
   }
   out.count = 0;
   for (int i = 1; i + 1 < k; ++i)
-    out.tri[out.count++] = {uint8_t(best), uint8_t((best + i) % k), uint8_t((best + i + 1) % k)};
+    out.tri[out.count++] = {uint8_t(best), uint8_t(wrap(best + i, k)),
+                            uint8_t(wrap(best + i + 1, k))};
 }
 
 namespace {

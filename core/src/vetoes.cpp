@@ -13,8 +13,8 @@ namespace {
 bool is_ring_edge(const Ring& ring, int a, int b, bool closing_exists) {
   int k = ring.verts;
   bool closed = ring.closed() || closing_exists;
-  if ((a + 1) % k == b && (closed || a + 1 < k)) return true;
-  if ((b + 1) % k == a && (closed || b + 1 < k)) return true;
+  if (wrap(a + 1, k) == b && (closed || a + 1 < k)) return true;
+  if (wrap(b + 1, k) == a && (closed || b + 1 < k)) return true;
   return false;
 }
 
@@ -74,7 +74,7 @@ Reject veto_triangle(const Ring& ring, const Patch& patch, std::array<uint8_t, 3
   bool on_ring_edge = false;
   for (int e = 0; e < 3; ++e) {
     int i = tri[e], j = tri[(e + 1) % 3];
-    if (j == (i + 1) % k && i < ring.faces) {
+    if (j == wrap(i + 1, k) && i < ring.faces) {
       on_ring_edge = true;
       if (folds_on(face, i)) return RejectFoldOver;
     }
