@@ -150,6 +150,8 @@ void Simplifier::run_part(Part& part, double threshold, size_t cap, const uint8_
     part.queue.erase(v);
     p.v = v;
     p.from = -1;
+    // A stale price over this goes back (below): its plan needs no mesh vetoes.
+    p.lead = part.queue.empty() ? threshold : std::min(threshold, part.queue.front_factor());
     const uint8_t hint = chosen_[v];
     plan_removal(p, /*areas=*/false); // made below for a removal (most plans are pushed back)
     if (wait.wanted()) {              // the plan is thrown away; the part waits for the next round

@@ -72,7 +72,8 @@ double Simplifier::estimate(const void* self, uint32_t v, const Ring&, const Pat
 }
 
 Reject Simplifier::plan(uint32_t v, const Ring& ring, const Evaluation& e, Patch& patch,
-                        double& cost, bool check_topology, bool price, bool hinted) const {
+                        double& cost, bool check_topology, bool price, bool hinted,
+                        double lead) const {
   std::array<int, 2> seam;
   const bool on_seam = along(v, ring, seam) == Along::Seam;
   const int hint = hinted && lazy_ && chosen_[v] != kNoCandidate ? chosen_[v] : -1;
@@ -80,7 +81,7 @@ Reject Simplifier::plan(uint32_t v, const Ring& ring, const Evaluation& e, Patch
     return on_seam ? planner_.plan_seam(v, ring, seam[0], seam[1], d, patch, cost, check_topology,
                                         price)
                    : planner_.plan(v, ring, d, patch, cost, check_topology, OpenRing::Border, price,
-                                   first);
+                                   first, lead);
   };
   Reject why = attempt(e.normal, hint);
   const bool first_direction = why == RejectCount && !on_seam;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <limits>
+#include <utility>
 
 #include "local_error.h"
 
@@ -67,7 +68,7 @@ bool Planner::large_triangles_fold(const Patch& patch, uint64_t turned) const {
 }
 
 Reject Planner::plan(uint32_t v, const Ring& ring, Vec3 n, Patch& out, double& cost,
-                     bool check_topology, OpenRing open, bool price, int hint) const {
+                     bool check_topology, OpenRing open, bool price, int hint, double lead) const {
   const int k = ring.verts;
   if (k < 3 && !(k == 2 && !ring.closed())) return RejectFold;
   project(v, ring, n, *eval_, out);
@@ -116,9 +117,10 @@ Reject Planner::plan(uint32_t v, const Ring& ring, Vec3 n, Patch& out, double& c
   // go while the ring stays as it is (the topology veto's two reasons; a veto that asks the
   // mesh beyond the ring must be counted here too).
   bool refused_by_mesh = false;
-  auto accept = [&](int c) {
+  // `priced`: the exact price of `out` as it stands, when already made (NaN: not).
+  auto accept = [&](int c, double priced = std::numeric_limits<double>::quiet_NaN()) {
     out.candidate = refused_by_mesh ? kNoCandidate : uint8_t(c);
-    cost = price ? price_.exact(v, ring, out) : 0.0;
+    cost = !price ? 0.0 : priced == priced ? priced : price_.exact(v, ring, out);
     return RejectCount;
   };
   if (hint >= 0 && hint < candidates && fill_candidate(ring, open, hint, out) &&
@@ -181,6 +183,8 @@ Reject Planner::plan(uint32_t v, const Ring& ring, Vec3 n, Patch& out, double& c
     }
   };
   Reject first_why = RejectCount;
+  bool first =
+      price && check_topology && !face_bound_ && lead < std::numeric_limits<double>::infinity();
   while (m > 0) {
     const int c = next();
     if (c == 0) {
@@ -190,8 +194,23 @@ Reject Planner::plan(uint32_t v, const Ring& ring, Vec3 n, Patch& out, double& c
     } else {
       fill_candidate(ring, open, c, out);
     }
+    double priced = std::numeric_limits<double>::quiet_NaN();
+    if (std::exchange(first, false)) {
+      // The shape veto alone first (the corners' doubts price a crease): a plan that will not
+      // lead is not asked the mesh's vetoes. The same price as after them (they write nothing).
+      out.corner_doubts = 0;
+      if (veto_shape(ring, out, replaced, normals_, *limits_, c == 0 || on_plane_,
+                     &out.corner_doubts) == RejectCount) {
+        priced = price_.exact(v, ring, out);
+        if (priced > lead) {
+          out.candidate = uint8_t(c);
+          cost = priced;
+          return RejectCount;
+        }
+      }
+    }
     const Reject why = vetoed(c == 0 || on_plane_);
-    if (why == RejectCount) return accept(c);
+    if (why == RejectCount) return accept(c, priced);
     if (first_why == RejectCount) first_why = why;
     refused_by_mesh |= why == RejectEdge || why == RejectTriangle;
   }

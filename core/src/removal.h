@@ -59,9 +59,14 @@ class Planner {
   // tried first; if no veto refuses it, it is what the whole plan would choose (the vetoes
   // refused the ones ranked before it then for the ring's own sake, and refuse them still), and
   // the ranking is skipped.
+  // `lead`: the price under which the plan would be committed (the queue's next). A first
+  // ranked candidate the shape veto passes and priced above it is returned as planned without
+  // the vetoes that ask the mesh (topology, the carried input, the input's faces): the caller
+  // pushes it back, and its next plan, the hint's, asks them (most plans of a stale price are
+  // pushed back: a sixth of a run's time at 1.2 M faces was their mesh vetoes).
   Reject plan(uint32_t v, const Ring& ring, Vec3 normal, Patch& out, double& cost,
               bool check_topology = true, OpenRing open = OpenRing::Border, bool price = true,
-              int hint = -1) const;
+              int hint = -1, double lead = std::numeric_limits<double>::infinity()) const;
 
   // The removal of a vertex on exactly two constrained edges, to ring positions i < j: the ring
   // is cut along the polyline (ring[i], v, ring[j]) and each side is planned as an open ring

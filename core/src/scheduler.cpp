@@ -57,7 +57,7 @@ void Simplifier::plan_removal(Planned& p, bool areas) const {
   // The plan is made again: a diagonal may have become an edge since v was queued. Only a
   // stale price is made again.
   p.why = plan(p.v, p.ring, e, p.patch, cost, /*check_topology=*/true, p.stale && local,
-               /*hinted=*/!p.stale);
+               /*hinted=*/!p.stale, p.lead);
   p.priority = local ? std::max(cost, chord) : e.factor;
   if (areas && p.why == RejectCount && lazy_) fan_area_changes(p.ring, p.patch, p.area_change);
 }

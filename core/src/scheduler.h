@@ -6,6 +6,7 @@
 #include <array>
 #include <cstddef>
 #include <cstdint>
+#include <limits>
 #include <utility>
 #include <vector>
 
@@ -25,6 +26,8 @@ struct Planned {
   int overflows = 0;
   uint32_t v;
   int from; // the interval it was read off
+  // A stale price planned above this is pushed back: not asked the mesh's vetoes (Planner::plan).
+  double lead = std::numeric_limits<double>::infinity();
   bool stale, usable;
   bool deferred = false; // it waited for the input's hierarchy (InputSurface::Deferral)
   Reject why;

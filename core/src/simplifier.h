@@ -144,8 +144,10 @@ class Simplifier {
   // with the chosen patch's local error in `cost`.
   // `hinted`: v's ring is the one its last plan saw (a pop whose price is still today's), so
   // that plan's candidate (chosen_) is tried first.
+  // `lead`: Planner::plan's (a plan priced above it is not asked the mesh's vetoes).
   Reject plan(uint32_t v, const Ring& ring, const Evaluation& e, Patch& patch, double& cost,
-              bool check_topology = true, bool price = true, bool hinted = false) const;
+              bool check_topology = true, bool price = true, bool hinted = false,
+              double lead = std::numeric_limits<double>::infinity()) const;
   static double price(const void* self, uint32_t v, const Ring& ring, const Patch& patch);
   static double estimate(const void* self, uint32_t v, const Ring& ring, const Patch& patch,
                          double cap, bool& complete);

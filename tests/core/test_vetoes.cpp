@@ -237,3 +237,36 @@ TEST(Vetoes, APlanAfterARefusalByTheMeshLeavesNoHint) {
   EXPECT_FALSE(notch_fan(out));
   EXPECT_EQ(out.candidate, kNoCandidate);
 }
+
+// A stale price planned above the queue's next (`lead`) is pushed back, not committed: its
+// first ranked candidate is priced after the shape veto alone and returned without the mesh's
+// vetoes; under the lead the whole plan is made. The notch's fan's diagonal (3, 5) exists
+// elsewhere in the mesh, as above.
+TEST(Vetoes, APlanPricedOverItsLeadIsNotAskedTheMesh) {
+  RingCase s;
+  s.mesh = vrs_test::concave_fan();
+  s.mesh.positions[3 * 6 + 2] = 0.3f;
+  s.mesh.positions.insert(s.mesh.positions.end(), {0.0f, 1.0f, -5.0f});
+  s.mesh.triangles.insert(s.mesh.triangles.end(), {3u, 5u, 7u});
+  open_ring(s, 6);
+  Evaluator eval(Mode::Surface3D, {0, 0, 1}, s.mesh.positions.data());
+  RemovalLimits limits;
+  Pricer price{[](const void*, uint32_t, const Ring&, const Patch& p, double, bool& complete) {
+                 complete = true;
+                 return notch_fan(p) ? 0.0 : 1.0;
+               },
+               seven, nullptr};
+  Planner planner(eval, s.topo, s.mesh.triangles.data(), s.normals.data(), limits, price, true);
+  Patch out;
+  double cost = 0;
+  ASSERT_EQ(planner.plan(6, s.ring, {0, 0, 1}, out, cost, true, OpenRing::Border, true, -1, 5.0),
+            RejectCount);
+  EXPECT_TRUE(notch_fan(out));
+  EXPECT_EQ(out.candidate, 1 + 3); // the hint its next plan tries, with the mesh's vetoes
+  EXPECT_GT(cost, 5.0);
+  // At or under the lead it would be committed: asked the mesh, refused, another taken.
+  ASSERT_EQ(planner.plan(6, s.ring, {0, 0, 1}, out, cost, true, OpenRing::Border, true, -1, 7.0),
+            RejectCount);
+  EXPECT_FALSE(notch_fan(out));
+  EXPECT_EQ(out.candidate, kNoCandidate);
+}
