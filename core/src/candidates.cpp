@@ -38,7 +38,8 @@ void fill_fan(const Ring& ring, int apex, Patch& out) {
   const int k = ring.verts;
   out.count = 0;
   for (int i = 1; i + 1 < k; ++i)
-    out.tri[out.count++] = {uint8_t(apex), uint8_t(wrap(apex + i, k)), uint8_t(wrap(apex + i + 1, k))};
+    out.tri[out.count++] = {uint8_t(apex), uint8_t(wrap(apex + i, k)),
+                            uint8_t(wrap(apex + i + 1, k))};
 }
 
 } // namespace
