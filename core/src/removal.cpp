@@ -1,6 +1,7 @@
 #include "removal.h"
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 #include <utility>
 
@@ -73,11 +74,12 @@ Reject Planner::plan(uint32_t v, const Ring& ring, Vec3 n, Patch& out, double& c
   if (k < 3 && !(k == 2 && !ring.closed())) return RejectFold;
   project(v, ring, n, *eval_, out);
   const FaceNormals& replaced = out.face_n;
-  auto vetoed = [&](bool plane_angle) {
+  // `shaped`: the shape veto already passed `out` (its corner doubts set).
+  auto vetoed = [&](bool plane_angle, bool shaped = false) {
     // Topology first (it cannot change with the projection), then shape.
     Reject why = check_topology ? veto_topology(ring, out, open, *topo_, tris_) : RejectCount;
-    out.corner_doubts = 0;
-    if (why == RejectCount)
+    if (!shaped) out.corner_doubts = 0;
+    if (why == RejectCount && !shaped)
       why = veto_shape(ring, out, replaced, normals_, *limits_, plane_angle, &out.corner_doubts);
     // Judged against the input where the mesh look-ups are (the plan that commits), not in
     // every pricing pass: it walks every point the old faces carry (a tenth of the time).
@@ -120,7 +122,7 @@ Reject Planner::plan(uint32_t v, const Ring& ring, Vec3 n, Patch& out, double& c
   // `priced`: the exact price of `out` as it stands, when already made (NaN: not).
   auto accept = [&](int c, double priced = std::numeric_limits<double>::quiet_NaN()) {
     out.candidate = refused_by_mesh ? kNoCandidate : uint8_t(c);
-    cost = !price ? 0.0 : priced == priced ? priced : price_.exact(v, ring, out);
+    cost = !price ? 0.0 : !std::isnan(priced) ? priced : price_.exact(v, ring, out);
     return RejectCount;
   };
   if (hint >= 0 && hint < candidates && fill_candidate(ring, open, hint, out) &&
@@ -209,7 +211,7 @@ Reject Planner::plan(uint32_t v, const Ring& ring, Vec3 n, Patch& out, double& c
         }
       }
     }
-    const Reject why = vetoed(c == 0 || on_plane_);
+    const Reject why = vetoed(c == 0 || on_plane_, !std::isnan(priced));
     if (why == RejectCount) return accept(c, priced);
     if (first_why == RejectCount) first_why = why;
     refused_by_mesh |= why == RejectEdge || why == RejectTriangle;

@@ -208,24 +208,41 @@ TEST(Vetoes, PlannerTriesItsHintFirstAndPlansInFullWhenItIsRefused) {
   EXPECT_TRUE(notch_fan(hinted));
 }
 
+namespace {
+
+// The raised arrow with the notch's fan ranked first (priced 7) and its diagonal (3, 5) an edge
+// elsewhere in the mesh: the mesh's topology veto refuses it.
+struct NotchDiagonalElsewhere {
+  RingCase s;
+  std::unique_ptr<Evaluator> eval;
+  RemovalLimits limits;
+  std::unique_ptr<Planner> planner;
+  NotchDiagonalElsewhere() {
+    s.mesh = vrs_test::concave_fan();
+    s.mesh.positions[3 * 6 + 2] = 0.3f;
+    s.mesh.positions.insert(s.mesh.positions.end(), {0.0f, 1.0f, -5.0f});
+    s.mesh.triangles.insert(s.mesh.triangles.end(), {3u, 5u, 7u});
+    open_ring(s, 6);
+    eval = std::make_unique<Evaluator>(Mode::Surface3D, Vec3{0, 0, 1}, s.mesh.positions.data());
+    Pricer price{[](const void*, uint32_t, const Ring&, const Patch& p, double, bool& complete) {
+                   complete = true;
+                   return notch_fan(p) ? 0.0 : 1.0;
+                 },
+                 seven, nullptr};
+    planner = std::make_unique<Planner>(*eval, s.topo, s.mesh.triangles.data(), s.normals.data(),
+                                        limits, price, true);
+  }
+};
+
+} // namespace
+
 // A candidate taken after one the mesh's other faces refused (an edge found elsewhere, which can
 // go while the ring stays) is no hint for the next plan; one after the ring's own refusals is.
 TEST(Vetoes, APlanAfterARefusalByTheMeshLeavesNoHint) {
-  RingCase s;
-  s.mesh = vrs_test::concave_fan();
-  s.mesh.positions[3 * 6 + 2] = 0.3f;
-  s.mesh.positions.insert(s.mesh.positions.end(), {0.0f, 1.0f, -5.0f});
-  s.mesh.triangles.insert(s.mesh.triangles.end(), {3u, 5u, 7u}); // the edge (3, 5) elsewhere
-  open_ring(s, 6);
+  const NotchDiagonalElsewhere n;
+  const RingCase& s = n.s;
   ASSERT_EQ(s.ring.verts, 6);
-  Evaluator eval(Mode::Surface3D, {0, 0, 1}, s.mesh.positions.data());
-  RemovalLimits limits;
-  Pricer price{[](const void*, uint32_t, const Ring&, const Patch& p, double, bool& complete) {
-                 complete = true;
-                 return notch_fan(p) ? 0.0 : 1.0;
-               },
-               seven, nullptr};
-  Planner planner(eval, s.topo, s.mesh.triangles.data(), s.normals.data(), limits, price, true);
+  const Planner& planner = *n.planner;
   Patch out;
   double cost = 0;
   // Priced without the mesh's look-ups, the notch's fan is taken and is a hint.
@@ -240,23 +257,11 @@ TEST(Vetoes, APlanAfterARefusalByTheMeshLeavesNoHint) {
 
 // A stale price planned above the queue's next (`lead`) is pushed back, not committed: its
 // first ranked candidate is priced after the shape veto alone and returned without the mesh's
-// vetoes; under the lead the whole plan is made. The notch's fan's diagonal (3, 5) exists
-// elsewhere in the mesh, as above.
+// vetoes; under the lead the whole plan is made.
 TEST(Vetoes, APlanPricedOverItsLeadIsNotAskedTheMesh) {
-  RingCase s;
-  s.mesh = vrs_test::concave_fan();
-  s.mesh.positions[3 * 6 + 2] = 0.3f;
-  s.mesh.positions.insert(s.mesh.positions.end(), {0.0f, 1.0f, -5.0f});
-  s.mesh.triangles.insert(s.mesh.triangles.end(), {3u, 5u, 7u});
-  open_ring(s, 6);
-  Evaluator eval(Mode::Surface3D, {0, 0, 1}, s.mesh.positions.data());
-  RemovalLimits limits;
-  Pricer price{[](const void*, uint32_t, const Ring&, const Patch& p, double, bool& complete) {
-                 complete = true;
-                 return notch_fan(p) ? 0.0 : 1.0;
-               },
-               seven, nullptr};
-  Planner planner(eval, s.topo, s.mesh.triangles.data(), s.normals.data(), limits, price, true);
+  const NotchDiagonalElsewhere n;
+  const RingCase& s = n.s;
+  const Planner& planner = *n.planner;
   Patch out;
   double cost = 0;
   ASSERT_EQ(planner.plan(6, s.ring, {0, 0, 1}, out, cost, true, OpenRing::Border, true, -1, 5.0),
