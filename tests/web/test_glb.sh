@@ -94,7 +94,9 @@ ls "$out"/.vrsimplify-* >/dev/null 2>&1 && fail "a temporary file was left behin
 
 # The page in a real browser, throttled: the textured chain and the scan.
 export VRS_PYTHON=$python
-node "$here/browser_test.mjs" "$top/python/vrsimplify/serve.py" "$out/tex/sub/bunny.glb" \
+# Served from beside its texture: the server hands out only what lies in the .glb's folder.
+"$bin" "$out/tex/bunny.obj" "$out/tex/bunny.glb" --lods 4 >/dev/null || fail "textured --lods 4 beside its texture"
+node "$here/browser_test.mjs" "$top/python/vrsimplify/serve.py" "$out/tex/bunny.glb" \
   "$out/browser-bunny" --throttle 1000000 --max-first 0.2 || fail "browser: textured bunny"
 node "$here/browser_test.mjs" "$top/python/vrsimplify/serve.py" "$out/elephant.glb" \
   "$out/browser-elephant" --throttle 300000 --max-first 0.1 || fail "browser: elephant"
