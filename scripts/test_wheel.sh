@@ -28,7 +28,8 @@ print("a %d-face run to %d faces" % (len(m.faces), len(r.faces)))'
 suite() { # LABEL PYTHON WHEEL [pip runner...]
   local label=$1 python=$2 wheel=$3 env=$scratch/$1
   "$python" -m venv "$env/venv"
-  "$env/venv/bin/python" -m pip install -q --disable-pip-version-check "$wheel" "${pins[@]}"
+  # With the [trimesh] extra, as the README installs it (scipy from it, pinned).
+  "$env/venv/bin/python" -m pip install -q --disable-pip-version-check "$wheel[trimesh]" "${pins[@]}" "$(pin scipy)"
   cd "$env"
   "$env/venv/bin/python" -c "import vrsimplify, sys; assert '$env' in vrsimplify.__file__, vrsimplify.__file__"
   local ms

@@ -120,22 +120,9 @@ std::string text_of(int t, const unsigned char* p) {
 // Whether a coordinate written as `token` holds more than a float: its float, printed with as
 // many significant digits as the token has, reads back as another number. (Most decimals are
 // no float, nor double, exactly: "0.1809" fits a float as well as the text says.)
+// A number as a text file writes it, judged by its value as the core judges every double.
 bool beyond_float(const std::string& token) {
-  int digits = 0;
-  bool leading = true;
-  for (char c : token) {
-    if (c == 'e' || c == 'E') break;
-    if (c < '0' || c > '9') continue;
-    if (leading && c == '0') continue;
-    leading = false;
-    ++digits;
-  }
-  if (digits <= 7) return false;
-  const double v = std::strtod(token.c_str(), nullptr);
-  if (!std::isfinite(v)) return false;
-  char b[48];
-  std::snprintf(b, sizeof b, "%.*g", std::min(digits, 17), double(float(v)));
-  return std::strtod(b, nullptr) != v;
+  return vrs::beyond_float(std::strtod(token.c_str(), nullptr));
 }
 
 } // namespace
@@ -194,8 +181,7 @@ ExactVertices::ExactVertices(const std::string& input, const std::string& output
   sink.vertex = [&](const double p[3]) {
     for (int a = 0; a < 3; ++a) {
       last[a] = p[a];
-      if (binary_values)
-        beyond_float_ = beyond_float_ || (std::isfinite(p[a]) && double(float(p[a])) != p[a]);
+      if (binary_values) beyond_float_ = beyond_float_ || vrs::beyond_float(p[a]);
     }
     xyz_.insert(xyz_.end(), p, p + 3);
   };
@@ -272,9 +258,7 @@ ExactVertices::ExactVertices(const std::string& input, const std::string& output
 
 bool ExactVertices::core_positions(size_t vertices, std::vector<float>& out) const {
   if (!beyond_float_ || xyz_.size() != 3 * vertices) return false;
-  out.resize(xyz_.size());
-  for (size_t i = 0; i < xyz_.size(); ++i)
-    out[i] = float(xyz_[i] - xyz_[i % 3]);
+  out = vrs::float_positions(xyz_.data(), vertices);
   return true;
 }
 

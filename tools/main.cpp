@@ -159,13 +159,13 @@ void print_json(const vrs::Report& r, double seconds_simplify, double seconds_to
       "\"nonfinite_vertices\":%zu,\"unreferenced_vertices\":%zu,"
       "\"reoriented_faces\":%zu,\"welded_vertices\":%zu},"
       "\"relaxed_removals\":%zu,\"slid\":%zu,\"boundary_simplified\":%s,\"stop_detail\":\"%s\","
-      "\"message\":\"%s\"",
+      "\"message\":\"%s\",\"target_faces\":%zu,\"target_vertices\":%zu",
       r.rejected_total(), vrs::stop_reason_name(r.stop), r.target_reached ? "true" : "false",
       r.max_removed_factor, r.kept_boundary, r.kept_nonmanifold, r.kept_locked, r.kept_high_valence,
       r.kept_constrained, r.constrained_edges, r.dropped_degenerate_faces, r.nonfinite_vertices,
       r.unreferenced_vertices, r.reoriented_faces, r.welded_vertices, r.relaxed_removals, r.slid,
       r.boundary_simplified ? "true" : "false", vrs_common::json_text(r.stop_detail).c_str(),
-      vrs_common::json_text(r.message).c_str());
+      vrs_common::json_text(r.message).c_str(), r.target_faces, r.target_vertices);
   // A bound that was not tracked is absent, never 0 (which would read "no error at all").
   if (bounded)
     std::printf(",\"error_bound\":%.9g,\"error_bound_percent\":%.9g", r.error_bound,
@@ -186,8 +186,11 @@ void print_text(const vrs::Report& r, double seconds_simplify, double seconds_to
   std::printf("rejected removals: %zu (", r.rejected_total());
   for (int i = 0; i < vrs::RejectCount; ++i)
     std::printf("%s%s %zu", i ? ", " : "", vrs::reject_name(vrs::Reject(i)), r.rejected[i]);
-  std::printf(")\nstopped: %s, target %s\n", vrs::stop_reason_name(r.stop),
+  std::printf(")\nstopped: %s, target %s", vrs::stop_reason_name(r.stop),
               r.target_reached ? "reached" : "NOT reached");
+  if (!r.target_reached && r.target_faces)
+    std::printf(" (%zu faces asked, %zu kept)", r.target_faces, r.faces);
+  std::printf("\n");
   if (!r.stop_detail.empty()) std::printf("why:     %s\n", r.stop_detail.c_str());
   if (bounded)
     std::printf("bound:   %.6g (%.6g %% of the diagonal): no point of the output is farther "

@@ -8,6 +8,7 @@
 #include <csignal>
 #include <cstdio>
 #include <cstring>
+#include <filesystem>
 #include <fstream>
 #include <sstream>
 
@@ -94,8 +95,12 @@ LoadResult load(const std::string& path) {
   LoadResult r;
   auto* doc = new VcgDocument;
   std::string error;
+  std::error_code size_error;
   try {
-    if (ends_with(path, ".obj")) {
+    if (std::filesystem::is_regular_file(path, size_error) &&
+        std::filesystem::file_size(path, size_error) == 0) {
+      error = "the mesh has no faces (the file is empty)"; // in every format alike
+    } else if (ends_with(path, ".obj")) {
       error = read_obj(path, *doc);
     } else if (ends_with(path, ".stl")) {
       error = read_stl(path, *doc);
@@ -127,6 +132,11 @@ LoadResult load(const std::string& path) {
   if (ends_with(path, ".stl")) {
     weld_stl_corners(doc->mesh);
     vcg::tri::Allocator<VcgMesh>::CompactEveryVector(doc->mesh);
+  }
+  if (doc->mesh.fn == 0) { // as the core, the numpy API and the MeshLab filter refuse it
+    r.error = "cannot read " + path + ": the mesh has no faces";
+    delete doc;
+    return r;
   }
   r.doc = doc;
   return r;

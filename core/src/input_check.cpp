@@ -58,6 +58,8 @@ std::string check_options(const Options& o, size_t vertex_count, size_t face_cou
 std::string check_mesh(const Mesh& m) {
   if (m.positions.size() % 3 != 0) return "positions size is not a multiple of 3";
   if (m.triangles.size() % 3 != 0) return "triangles size is not a multiple of 3";
+  // Nothing to simplify is a mistake upstream (an empty file, a point cloud), not a result.
+  if (m.triangles.empty()) return "the mesh has no faces";
   const size_t n = m.vertex_count();
   if (n >= kNone) return "too many vertices (" + std::to_string(n) + ")";
   if (m.triangles.size() / 3 >= kRewrittenSlot)

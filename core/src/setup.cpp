@@ -161,6 +161,7 @@ void Simplifier::first_prices(UninitVector<uint8_t>& kinds, UninitVector<FirstPr
                       ? static_cast<size_t>(std::llround(opt_.target.ratio * faces0_))
                       : 0;
   target_vertices_ = tk == TargetKind::Vertices ? opt_.target.vertices : 0;
+  rep_.target_faces = target_faces_, rep_.target_vertices = target_vertices_;
   if (!simplify_boundary_ && opt_.simplify_boundary_when_needed &&
       (simplify_boundary_ = rep_.boundary_simplified = border_needs_simplifying()))
     lock_split_seams();

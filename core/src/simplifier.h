@@ -95,7 +95,8 @@ class Simplifier {
   double parallel_seconds() const { return workers_.parallel_seconds(); }
   double span_seconds(int threads) const { return workers_.span_seconds(threads); }
   // Why the remaining vertices stay, when the target was not met (Report::stop_detail).
-  std::string explain_stop() const; // stop_explanation.cpp
+  std::string explain_stop() const;                           // stop_explanation.cpp
+  bool next_to_nonfinite(uint32_t v, const Ring& ring) const; // stop_explanation.cpp
 
  private:
   // A vertex of a single triangle goes with it only in the last-resort pass: that cuts a

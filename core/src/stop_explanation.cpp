@@ -18,6 +18,8 @@ std::string explain_remaining(const Remaining& r, bool simplify_boundary, bool l
   add(r.corners, "at corners of the outline");
   add(r.constrained, "on seams or creases where they end, meet or cross");
   add(r.locked, "locked");
+  add(r.nonfinite, "with a NaN or infinite coordinate, or next to one (kept, as every plane "
+                   "through them is undefined)");
   add(r.split_seam, "on a seam of split vertices, kept (simplified apart, its two sides would "
                     "open a crack)");
   add(r.nonmanifold, "non-manifold or inconsistently oriented");
@@ -46,6 +48,14 @@ std::string explain_remaining(const Remaining& r, bool simplify_boundary, bool l
   return "remaining vertices: " + (out.empty() ? std::string("none") : out);
 }
 
+bool Simplifier::next_to_nonfinite(uint32_t v, const Ring& ring) const {
+  if (!rep_.nonfinite_vertices) return false;
+  if (!is_finite(eval_.position(v))) return true;
+  for (int i = 0; i < ring.verts; ++i)
+    if (!is_finite(eval_.position(ring.v[i]))) return true;
+  return false;
+}
+
 std::string Simplifier::explain_stop() const {
   if (jump_price_ > 0) {
     char why[512];
@@ -53,7 +63,7 @@ std::string Simplifier::explain_stop() const {
                   "stopped short of the target: the cheapest removal left costs %.3g, %.0f times "
                   "the dearest made %s (%.3g); the surface would change abruptly (a part "
                   "dropped, a tunnel pressed flat, a thin wall crossed) rather than lose detail "
-                  "(max_price_jump %g%s; 0 reaches the target at any cost)",
+                  "(max_jump, --max-jump: %g%s; 0 reaches the target at any cost)",
                   jump_price_, jump_price_ / std::max(jump_from_, jump_floor_),
                   eased() ? "before the vetoes were eased" : "so far", jump_from_,
                   opt_.max_price_jump, eased() ? ", half of it once eased" : "");
@@ -68,7 +78,7 @@ std::string Simplifier::explain_stop() const {
     if (flags_[v] & kFlagTwin)
       ++r.split_seam;
     else if (flags_[v] & kFlagLocked)
-      ++r.locked;
+      ++(next_to_nonfinite(v, ring) ? r.nonfinite : r.locked);
     else if (kind == VertexKind::NonManifold)
       ++r.nonmanifold;
     else if (kind == VertexKind::HighValence)

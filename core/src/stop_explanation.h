@@ -14,7 +14,8 @@ struct Remaining {
   size_t boundary = 0;     // on the boundary and not removable there
   size_t corners = 0;      // removable boundary vertices never planned (outline corners)
   size_t constrained = 0;  // where seams or creases end, meet or cross
-  size_t locked = 0;       // by the user, or next to a non-finite position
+  size_t locked = 0;       // by the user
+  size_t nonfinite = 0;    // a NaN/inf position, or next to one
   size_t split_seam = 0;   // border vertices at another's position (kFlagTwin)
   size_t nonmanifold = 0;  // non-manifold or inconsistently oriented
   size_t high_valence = 0; // more neighbours than the cap

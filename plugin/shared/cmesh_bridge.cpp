@@ -78,7 +78,8 @@ CoreCopy to_core(CMeshO& m) {
   CoreCopy c;
   std::vector<uint32_t>& index = c.index;
   index.assign(m.vert.size(), vrs::kRemoved);
-  c.mesh.positions.reserve(3 * size_t(m.vn));
+  std::vector<double> xyz; // MeshLab's scalars (double in 2022.02 and later)
+  xyz.reserve(3 * size_t(m.vn));
   c.vertex.reserve(size_t(m.vn));
   for (size_t i = 0; i < m.vert.size(); ++i) {
     CVertexO& v = m.vert[i];
@@ -86,8 +87,10 @@ CoreCopy to_core(CMeshO& m) {
     index[i] = static_cast<uint32_t>(c.vertex.size());
     c.vertex.push_back(&v);
     for (int k = 0; k < 3; ++k)
-      c.mesh.positions.push_back(float(v.P()[k]));
+      xyz.push_back(double(v.P()[k]));
   }
+  // As the command line and the numpy API read the same coordinates: the same run.
+  c.mesh.positions = vrs::float_positions(xyz.data(), c.vertex.size());
   c.mesh.triangles.reserve(3 * size_t(m.fn));
   c.face.reserve(size_t(m.fn));
   for (size_t i = 0; i < m.face.size(); ++i) {

@@ -45,6 +45,10 @@ QString filter_info() {
 
 namespace {
 
+// The last application's stop detail on this thread: pymeshlab's result map takes no strings,
+// so vrsimplify.pymeshlab reads it through vrs_filter_last_stop_detail().
+thread_local std::string last_stop_detail;
+
 // Label of LOD layer `level` made from `base`: MeshLab takes what follows a '.' for a format.
 QString lod_label(const QString& base, int level) {
   QString stem = QFileInfo(base).completeBaseName();
@@ -58,6 +62,7 @@ struct Totals {
   size_t removed = 0, rejected[vrs::RejectCount] = {};
   size_t kept_boundary = 0, kept_nonmanifold = 0, kept_locked = 0, kept_high_valence = 0;
   size_t kept_constrained = 0, constrained_edges = 0, relaxed_removals = 0, slid = 0;
+  size_t target_faces = 0; // the last level's
   double max_priority = 0, seconds = 0;
   double error_bound = 0, diagonal = 0; // summed over the levels: each is bounded from the last
   bool target_reached = true, boundary_simplified = false;
@@ -138,6 +143,7 @@ Outcome Application::run(const RichParameterList& par) {
   r["input_vertices"] = count(input_vertices);
   r["output_faces"] = source->cm.fn;
   r["output_vertices"] = source->cm.vn;
+  r["target_faces"] = count(totals_.target_faces);
   // The CLI's JSON and the numpy API's keys (docs/report.md); nested groups flattened
   // (rejected_fold, kept_boundary, ...): pymeshlab takes flat numbers only.
   r["removed"] = count(totals_.removed);
@@ -229,6 +235,8 @@ QString Application::simplify_layer(MeshModel& m, const FilterSettings& s, int l
   totals_.error_bound += r.error_bound;
   totals_.seconds += seconds;
   totals_.target_reached = totals_.target_reached && r.target_reached;
+  totals_.target_faces = r.target_faces;
+  last_stop_detail = r.stop_detail;
   totals_.stop = r.stop;
   totals_.boundary_simplified = totals_.boundary_simplified || r.boundary_simplified;
 
@@ -287,6 +295,7 @@ QString Application::simplify_layer(MeshModel& m, const FilterSettings& s, int l
 } // namespace
 
 Outcome apply_vertex_removal(MeshDocument& md, const RichParameterList& par, const Host& host) {
+  last_stop_detail.clear();
   // Anything thrown here would abort the host (the GUI with the user's unsaved work, or the
   // Python interpreter); the rollback has already restored the document when we get here.
   Outcome out;
@@ -304,3 +313,7 @@ Outcome apply_vertex_removal(MeshDocument& md, const RichParameterList& par, con
 }
 
 } // namespace vrs_plugin
+
+extern "C" __attribute__((visibility("default"))) const char* vrs_filter_last_stop_detail() {
+  return vrs_plugin::last_stop_detail.c_str();
+}

@@ -37,15 +37,23 @@ void read_indices_as(const AnyArray& a, size_t bound, const char* what,
 } // namespace
 
 std::vector<float> read_positions(const AnyArray& a) {
-  check_rows(a, "vertices", 3);
-  std::vector<float> out(3 * a.shape(0));
-  const bool f32 = a.dtype() == nb::dtype<float>();
-  if (!f32 && a.dtype() != nb::dtype<double>())
-    throw nb::value_error("vertices must be float32 or float64");
-  for (size_t i = 0; i < a.shape(0); ++i)
+  check_rows(a, "mesh_vertices", 3);
+  const size_t n = a.shape(0);
+  if (a.dtype() == nb::dtype<float>()) {
+    std::vector<float> out(3 * n);
+    for (size_t i = 0; i < n; ++i)
+      for (size_t j = 0; j < 3; ++j)
+        out[3 * i + j] = *element<float>(a, i, j);
+    return out;
+  }
+  if (a.dtype() != nb::dtype<double>())
+    throw nb::value_error("mesh_vertices must be float32 or float64");
+  // Doubles as the command line reads a file's: the same run, whatever reads the mesh.
+  std::vector<double> xyz(3 * n);
+  for (size_t i = 0; i < n; ++i)
     for (size_t j = 0; j < 3; ++j)
-      out[3 * i + j] = f32 ? *element<float>(a, i, j) : float(*element<double>(a, i, j));
-  return out;
+      xyz[3 * i + j] = *element<double>(a, i, j);
+  return vrs::float_positions(xyz.data(), n);
 }
 
 std::vector<uint32_t> read_indices(const AnyArray& a, size_t bound, const char* what,
@@ -85,6 +93,8 @@ nb::dict report_dict(const vrs::Report& r, bool bounded, double seconds, double 
   d["input_faces"] = r.input_faces;
   d["output_vertices"] = r.vertices;
   d["output_faces"] = r.faces;
+  d["target_faces"] = r.target_faces;
+  d["target_vertices"] = r.target_vertices;
   d["removed"] = r.removed;
   for (int i = 0; i < vrs::RejectCount; ++i)
     rejected[vrs::reject_name(vrs::Reject(i))] = r.rejected[i];

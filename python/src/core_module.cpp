@@ -1,13 +1,21 @@
 // vrsimplify._core: the C++ core behind the numpy API (python/vrsimplify/__init__.py holds the
 // Python side: argument checks a user reads, the targets, the result type). Arrays are read
 // through their strides straight into the core's mesh (the one copy an in-place core needs,
-// which also leaves the caller's arrays untouched); the run releases the GIL; Ctrl-C and the
-// progress callback are served from the progress hook, which takes the GIL back briefly.
+// which also leaves the caller's arrays untouched). The run goes on a thread of its own while
+// the caller waits with the GIL released and looks for Ctrl-C every few tens of milliseconds:
+// Python handles signals on its main thread only, and the core looks at its progress hook
+// only between steps (the set-up of a million faces takes seconds). The progress callback is
+// served from that hook, which takes the GIL back briefly.
+#include <atomic>
 #include <chrono>
 #include <cmath>
+#include <condition_variable>
 #include <cstdint>
+#include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
+#include <thread>
 #include <vector>
 
 #include <nanobind/nanobind.h>
@@ -36,14 +44,81 @@ std::vector<uint8_t> read_mask(const AnyArray& a, size_t n, const char* what, co
   return out;
 }
 
+// Runs abandoned to Ctrl-C that have not stopped yet: Python waits for them at exit, before
+// it finalizes (they touch no Python object once abandoned; they stop at their next step).
+std::mutex abandoned_mutex;
+std::condition_variable abandoned_done;
+int abandoned_runs = 0;
+
+// One run and everything it reads, shared by the caller and the run's thread: an abandoned run
+// finishes on its own, on its own copy of the mesh.
+struct Run {
+  vrs::Mesh mesh;
+  vrs::Options opt;
+  std::vector<uint32_t> seam_pairs;
+  std::vector<uint8_t> lock, polygon; // the triangles of polygons the caller puts back whole
+  vrs::Report report;
+  // Read and written with the GIL held only; emptied (never destroyed later) once abandoned.
+  nb::object progress;
+  std::optional<nb::python_error> error; // raised by the callback
+  std::atomic<bool> abandoned{false};
+  std::mutex mutex;
+  std::condition_variable finished;
+  bool done = false;
+};
+
+// The core's run of `run` on a thread of its own, the caller waiting (GIL released) and
+// looking for signals every 20 ms: a KeyboardInterrupt leaves the run to stop by itself.
+void run_interruptible(const std::shared_ptr<Run>& run) {
+  std::thread worker([run] {
+    run->report = vrs::simplify(run->mesh, run->opt);
+    bool abandoned;
+    {
+      std::lock_guard<std::mutex> lock(run->mutex);
+      run->done = true;
+      abandoned = run->abandoned.load();
+    }
+    run->finished.notify_all();
+    if (abandoned) {
+      std::lock_guard<std::mutex> lock(abandoned_mutex);
+      if (--abandoned_runs == 0) abandoned_done.notify_all();
+    }
+  });
+  for (;;) {
+    {
+      nb::gil_scoped_release release;
+      std::unique_lock<std::mutex> lock(run->mutex);
+      if (run->finished.wait_for(lock, std::chrono::milliseconds(20), [&] { return run->done; }))
+        break;
+    }
+    if (PyErr_CheckSignals() != 0) { // KeyboardInterrupt (or a signal handler's exception)
+      {
+        std::lock_guard<std::mutex> lock(run->mutex);
+        if (!run->done) {
+          std::lock_guard<std::mutex> count(abandoned_mutex);
+          ++abandoned_runs;
+          run->abandoned.store(true);
+        }
+      }
+      run->progress = nb::object(); // under the GIL: the run's thread never touches it again
+      run->error.reset();
+      worker.detach();
+      throw nb::python_error();
+    }
+  }
+  worker.join();
+}
+
 nb::tuple simplify(AnyArray vertices, AnyArray faces, const std::string& target_kind,
                    double target_value, double max_error, const std::string& mode, int threads,
                    bool simplify_boundary, bool keep_boundary, double max_jump,
                    double feature_angle, std::optional<AnyArray> seams,
                    std::optional<AnyArray> locked, nb::object progress,
                    const std::string& split_vertices, std::optional<AnyArray> polygon_faces) {
-  vrs::Options opt = make_options({target_kind, target_value}, max_error, mode, threads,
-                                  simplify_boundary, keep_boundary, max_jump, feature_angle);
+  auto run = std::make_shared<Run>();
+  vrs::Options& opt = run->opt;
+  opt = make_options({target_kind, target_value}, max_error, mode, threads, simplify_boundary,
+                     keep_boundary, max_jump, feature_angle);
   if (split_vertices == "seam")
     opt.split_vertices = vrs::SplitVertices::Seam;
   else if (split_vertices == "weld")
@@ -52,60 +127,58 @@ nb::tuple simplify(AnyArray vertices, AnyArray faces, const std::string& target_
     opt.split_vertices = vrs::SplitVertices::Keep;
   else
     throw nb::value_error("split_vertices must be seam, weld or keep");
-  vrs::Mesh mesh;
+  vrs::Mesh& mesh = run->mesh;
   mesh.positions = read_positions(vertices);
   const size_t n = mesh.vertex_count();
-  mesh.triangles = read_indices(faces, n, "triangle", 3);
-  std::vector<uint32_t> seam_pairs;
+  mesh.triangles = read_indices(faces, n, "mesh_faces", 3);
   if (seams) {
-    seam_pairs = read_indices(*seams, n, "seam", 2);
-    opt.constrained_edges = &seam_pairs;
+    run->seam_pairs = read_indices(*seams, n, "seams", 2);
+    opt.constrained_edges = &run->seam_pairs;
   }
-  std::vector<uint8_t> lock;
   if (locked) {
-    lock = read_mask(*locked, n, "locked", "vertex");
-    opt.locked = &lock;
+    run->lock = read_mask(*locked, n, "locked", "vertex");
+    opt.locked = &run->lock;
   }
-  std::vector<uint8_t> polygon; // the triangles of polygons the caller puts back whole
   if (polygon_faces) {
-    polygon = read_mask(*polygon_faces, mesh.face_count(), "polygon_faces", "face");
-    opt.polygon_faces = &polygon;
+    run->polygon = read_mask(*polygon_faces, mesh.face_count(), "polygon_faces", "face");
+    opt.polygon_faces = &run->polygon;
   }
 
-  // Served every few hundred removals on this (the calling) thread: the GIL is taken only
-  // here, so other Python threads run, and so may another simplification.
-  bool python_error = false;
-  opt.progress = [&](float fraction) -> bool {
+  // Served every few hundred removals on the run's thread, the GIL taken only here: other
+  // Python threads run meanwhile, and so may another simplification.
+  const bool has_progress = !progress.is_none();
+  run->progress = std::move(progress);
+  Run* r = run.get(); // kept alive by the run's thread
+  opt.progress = [r, has_progress](float fraction) -> bool {
+    if (r->abandoned.load()) return false;
+    if (!has_progress) return true;
     nb::gil_scoped_acquire acquire;
-    if (PyErr_CheckSignals() != 0) {
-      python_error = true;
-      return false;
-    }
-    if (progress.is_none()) return true;
+    if (r->abandoned.load() || r->error) return false;
     try {
       // Any object Python calls true goes on (np.True_, 1, a non-empty string): as `if`.
-      nb::object go_on = progress(fraction);
+      // None goes on too: a callback that only prints returns nothing.
+      nb::object go_on = r->progress(fraction);
       if (go_on.is_none()) return true;
       const int truth = PyObject_IsTrue(go_on.ptr());
       if (truth < 0) throw nb::python_error();
       return truth != 0;
     } catch (nb::python_error& e) {
-      e.restore();
-      python_error = true;
+      r->error.emplace(std::move(e));
       return false;
     }
   };
 
-  vrs::Report report;
   const double diagonal = vrs::bounding_box_diagonal(mesh);
   const auto t0 = std::chrono::steady_clock::now();
-  {
-    nb::gil_scoped_release release;
-    report = vrs::simplify(mesh, opt);
-  }
+  run_interruptible(run);
   const double seconds =
       std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-  if (python_error) throw nb::python_error(); // KeyboardInterrupt, or the callback's error
+  if (run->error) { // the callback's exception, as it was raised
+    nb::python_error e = std::move(*run->error);
+    run->error.reset();
+    throw e;
+  }
+  const vrs::Report& report = run->report;
   if (!report.ok) throw nb::value_error(report.message.c_str());
 
   std::vector<int64_t> vertex_map(mesh.vertex_count());
@@ -138,6 +211,13 @@ NB_MODULE(_core, m) {
     if (code < 0 || code > int(vrs::StopReason::ErrorBound))
       throw nb::value_error("unknown stop reason");
     return vrs::stop_reason_name(vrs::StopReason(code));
+  });
+  // Called at exit (vrsimplify/__init__.py): runs abandoned to Ctrl-C stop before Python
+  // finalizes, so that none is left holding memory Python frees.
+  m.def("wait_abandoned_runs", [] {
+    nb::gil_scoped_release release;
+    std::unique_lock<std::mutex> lock(abandoned_mutex);
+    abandoned_done.wait(lock, [] { return abandoned_runs == 0; });
   });
   register_tiled(m);
   register_lods(m);

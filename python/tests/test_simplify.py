@@ -194,6 +194,38 @@ def test_ctrl_c_raises_keyboard_interrupt_and_leaves_the_input(fandisk):
     assert np.array_equal(v, fandisk[0]) and np.array_equal(f, fandisk[1])
 
 
+def test_ctrl_c_is_prompt_during_the_set_up():
+    """Ctrl-C half a second into a 1.3 M-face run (its set-up, where the core asks nothing
+    for seconds) raises KeyboardInterrupt at once: the run goes on a thread of its own and
+    the caller looks for signals every 20 ms."""
+    import threading
+    import time
+    import trimesh
+    m = trimesh.creation.icosphere(subdivisions=8)
+    v, f = np.asarray(m.vertices), np.asarray(m.faces)
+    before = signal.signal(signal.SIGINT, signal.default_int_handler)
+    sent = []
+    def ctrl_c():
+        sent.append(time.monotonic())
+        os.kill(os.getpid(), signal.SIGINT)
+    timer = threading.Timer(0.3, ctrl_c)
+    try:
+        start = time.monotonic()
+        timer.start()
+        with pytest.raises(KeyboardInterrupt):
+            vrsimplify.simplify(v, f, ratio=0.01, threads=1)
+        caught = time.monotonic()
+    finally:
+        timer.cancel()
+        signal.signal(signal.SIGINT, before)
+    assert sent and caught - sent[0] < 0.5, f"KeyboardInterrupt {caught - sent[0]:.3f} s after Ctrl-C"
+    assert caught - start < 2.0
+    # The interrupted run stops by itself; the next one is whole.
+    small = trimesh.creation.icosphere(subdivisions=4)
+    r = vrsimplify.simplify(np.asarray(small.vertices), np.asarray(small.faces), ratio=0.5)
+    assert r.report["target_reached"]
+
+
 @pytest.mark.parametrize("kwargs, message", [
     (dict(ratio=1.5), "ratio must be in"),
     (dict(ratio=0.5, faces=10), "at most one"),
@@ -219,12 +251,19 @@ def test_bad_input(sphere):
         vrsimplify.simplify(v, np.vstack([f, [[0, 1, len(v)]]]))
     with pytest.raises(ValueError, match="out of range"):
         vrsimplify.simplify(v, np.vstack([f, [[0, 1, -1]]]))
-    with pytest.raises(ValueError, match=r"\(n, 3\)"):
+    with pytest.raises(ValueError, match=r"mesh_vertices must be an \(n, 3\) array"):
         vrsimplify.simplify(v[:, :2], f)
-    with pytest.raises(ValueError, match="floats"):
+    with pytest.raises(ValueError, match=r"mesh_faces must be a \(k, 3\) array.*shape \(15360,\)"):
+        vrsimplify.simplify(v, f.reshape(-1))
+    with pytest.raises(ValueError, match=r"mesh_faces must be .*shape \(5120, 2\)"):
+        vrsimplify.simplify(v, f[:, :2])
+    with pytest.raises(ValueError, match="mesh_vertices has dtype complex64, expected numbers"):
         vrsimplify.simplify(v.astype(np.complex64), f)
     with pytest.raises(ValueError, match="integers"):
         vrsimplify.simplify(v, f.astype(np.float64))
+    # Integer positions are positions (as float16 ones and lists are): read as float64.
+    grid = vrsimplify.simplify(np.round(v * 1000).astype(np.int32), f, ratio=0.5)
+    assert grid.vertices.dtype == np.float64 and len(grid.faces) == len(f) // 2
     # NaN vertices and degenerate faces: a valid result that says what it worked around.
     bad_v = v.copy()
     bad_v[5] = np.nan
@@ -233,8 +272,11 @@ def test_bad_input(sphere):
     assert r.report["input_issues"]["nonfinite_vertices"] == 1
     assert r.report["input_issues"]["degenerate_faces"] == 1
     assert 5 in r.vertex_map
-    empty = vrsimplify.simplify(np.zeros((0, 3)), np.zeros((0, 3), np.int64))
-    assert len(empty.faces) == 0 and len(empty.vertices) == 0
+    # Nothing to simplify is a mistake upstream, as in the command line (exit 3) and MeshLab.
+    with pytest.raises(ValueError, match="the mesh has no faces"):
+        vrsimplify.simplify(np.zeros((0, 3)), np.zeros((0, 3), np.int64))
+    with pytest.raises(ValueError, match="the mesh has no faces"):
+        vrsimplify.simplify(v, np.zeros((0, 3), np.int64))
 
 
 def test_split_vertices_are_welded_for_the_run_and_split_again(sphere):
@@ -282,3 +324,48 @@ def test_a_soup_welds_freely_when_asked(sphere):
     assert r.report["input_issues"]["welded_vertices"] == len(soup_v) - len(v)
     seam = vrsimplify.simplify(soup_v, soup_f, ratio=0.1)  # every face its own chart
     assert len(seam.faces) == len(soup_f)
+
+
+def _torus(n=24, m=12):
+    u, w = np.meshgrid(np.linspace(0, 2 * np.pi, n, endpoint=False),
+                       np.linspace(0, 2 * np.pi, m, endpoint=False))
+    v = np.c_[((2 + np.cos(w)) * np.cos(u)).ravel(), ((2 + np.cos(w)) * np.sin(u)).ravel(),
+              np.sin(w).ravel()]
+    i, j = np.meshgrid(np.arange(n), np.arange(m))
+    a, b = j * n + i, j * n + (i + 1) % n
+    c, d = ((j + 1) % m) * n + i, ((j + 1) % m) * n + (i + 1) % n
+    return v, np.r_[np.c_[a.ravel(), b.ravel(), d.ravel()], np.c_[a.ravel(), d.ravel(), c.ravel()]]
+
+
+def test_stopping_short_warns_with_the_counts_and_the_reason():
+    """A torus cannot be 2 faces: the result is valid, and a TargetNotReachedWarning says how
+    many faces were asked and kept and why (the command line's "target NOT reached")."""
+    import warnings
+    v, f = _torus()
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        r = vrsimplify.simplify(v, f, faces=2)
+    short = [w for w in caught if issubclass(w.category, vrsimplify.TargetNotReachedWarning)]
+    assert len(short) == 1 and issubclass(vrsimplify.TargetNotReachedWarning, UserWarning)
+    text = str(short[0].message)
+    assert f"2 faces asked, {len(r.faces)} faces kept" in text and r.report["stop_detail"] in text
+    assert r.report["target_faces"] == 2 and not r.report["target_reached"]
+    assert short[0].filename == __file__  # points at the caller's line
+    with warnings.catch_warnings():
+        warnings.simplefilter("error", vrsimplify.TargetNotReachedWarning)
+        with pytest.raises(vrsimplify.TargetNotReachedWarning):
+            vrsimplify.simplify(v, f, faces=2)
+        r = vrsimplify.simplify(v, f, ratio=0.5)  # reached: no warning
+    assert r.report["target_faces"] == len(f) // 2 and r.report["target_reached"]
+
+
+def test_a_mesh_of_nan_says_why_its_vertices_stay():
+    """All-NaN positions: the vertices stay, and the words say NaN, not "locked"."""
+    v, f = _torus()
+    v = np.full_like(v, np.nan)
+    import warnings
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", vrsimplify.TargetNotReachedWarning)
+        r = vrsimplify.simplify(v, f, ratio=0.1)
+    assert len(r.faces) == len(f)
+    assert "NaN" in r.report["stop_detail"] and "locked" not in r.report["stop_detail"]

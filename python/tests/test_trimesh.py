@@ -28,7 +28,41 @@ def test_uvs_keep_their_values_and_material(sphere):
     out = vrsimplify.trimesh.simplify_trimesh(mesh, ratio=0.2)
     vmap = out.metadata["vrsimplify"]["vertex_map"]
     assert np.array_equal(out.visual.uv, uv[vmap])
-    assert out.visual.material is material
+    # A copy of the material, as of everything else: editing the output's leaves the input's.
+    assert out.visual.material is not material
+    assert np.array_equal(out.visual.material.diffuse, material.diffuse)
+    out.visual.material.diffuse = [0, 0, 255, 255]
+    assert np.array_equal(material.diffuse, [200, 10, 10, 255])
+
+
+def test_the_trimesh_extra_brings_what_trimesh_needs(sphere):
+    """`pip install vrsimplify[trimesh]`: the output's vertex normals (docs/lods.md) work."""
+    import importlib.metadata
+    requires = importlib.metadata.requires("vrsimplify") or []
+    assert any(r.startswith("scipy") and 'extra == "trimesh"' in r for r in requires), requires
+    out = vrsimplify.trimesh.simplify_trimesh(trimesh.Trimesh(*sphere, process=False), ratio=0.2)
+    assert np.allclose(np.linalg.norm(out.vertex_normals, axis=1), 1.0)
+
+
+def test_import_vrsimplify_gives_its_submodules():
+    """`import vrsimplify` then `vrsimplify.trimesh....` (as the README writes it), lazily."""
+    import subprocess
+    import sys
+    code = ("import vrsimplify, sys; assert 'vrsimplify.trimesh' not in sys.modules; "
+            "print(vrsimplify.trimesh.simplify_trimesh.__name__, vrsimplify.tiled.__name__)")
+    p = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert p.returncode == 0 and "simplify_trimesh vrsimplify.tiled" in p.stdout, p.stderr
+    p = subprocess.run([sys.executable, "-c", "import vrsimplify; vrsimplify.nothing"],
+                       capture_output=True, text=True)
+    assert "has no attribute 'nothing'" in p.stderr
+
+
+def test_python_m_vrsimplify_runs_the_command_line(tmp_path):
+    import subprocess
+    import sys
+    p = subprocess.run([sys.executable, "-m", "vrsimplify", "--version"], capture_output=True,
+                       text=True)
+    assert p.returncode == 0 and vrsimplify.__version__ in p.stdout + p.stderr, p
 
 
 def test_face_colors_come_from_the_faces_they_replace(sphere):

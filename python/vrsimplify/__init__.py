@@ -9,7 +9,10 @@ through ``Result.vertex_map``, per-face and per-corner data through ``face_sourc
 """
 from __future__ import annotations
 
+import atexit
 import dataclasses
+import importlib
+import warnings
 from typing import Callable, Optional, TypedDict, Union
 
 import numpy as np
@@ -17,17 +20,98 @@ import numpy as np
 from . import _core, polygons
 
 __version__: str = _core.__version__
-__all__ = ["simplify", "Result", "Report", "bounding_box_diagonal", "lods", "Lods", "LodLevel",
-           "write_glb"]
+# A run left to Ctrl-C stops at its next step on its own thread: wait for it before Python
+# finalizes.
+atexit.register(_core.wait_abandoned_runs)
+__all__ = ["simplify", "Result", "Report", "TargetNotReachedWarning", "bounding_box_diagonal",
+           "lods", "Lods", "LodLevel", "write_glb"]
+
+# Imported on first use (``vrsimplify.trimesh``): each needs a package the core does not.
+_SUBMODULES = ("trimesh", "pymeshlab", "tiled", "serve")
+
+
+def __getattr__(name: str):
+    if name in _SUBMODULES:
+        return importlib.import_module(f".{name}", __name__)
+    raise AttributeError(f"module {__name__!r} has no attribute {name!r}")
+
+
+class TargetNotReachedWarning(UserWarning):
+    """A run stopped short of the face or vertex count asked for: the result is valid, with
+    more faces than asked. The message gives the faces asked and kept and why the run stopped
+    (``report["stop_detail"]``); ``warnings.simplefilter("error", TargetNotReachedWarning)``
+    makes it an exception."""
+
+
+def _warn_if_short(report, stacklevel: int = 3) -> None:
+    """The command line prints "target NOT reached"; Python says it as a warning."""
+    if report["target_reached"] or report["stop_reason"] == "cancelled":
+        return
+    asked = (f"{report['target_faces']} faces" if report.get("target_faces")
+             else f"{report.get('target_vertices')} vertices" if report.get("target_vertices")
+             else "the target")
+    detail = report.get("stop_detail") or report["stop_reason"]
+    warnings.warn(f"target not reached: {asked} asked, {report['output_faces']} faces kept "
+                  f"({report['stop_reason']}): {detail}", TargetNotReachedWarning,
+                  stacklevel=stacklevel)
 
 
 class Report(TypedDict):
-    """What a run did: the same keys as the CLI's JSON and pymeshlab's dict (the documentation's
-    report table)."""
+    """What a run did: the same keys as the CLI's JSON and pymeshlab's dict.
+
+    Keys
+    ----
+    ok : bool
+        The run was made (bad input raises ValueError instead).
+    input_vertices, input_faces, output_vertices, output_faces : int
+        Counts before and after.
+    target_faces, target_vertices : int
+        The count asked for (a ratio's faces, rounded); 0 when the target is not that count.
+    removed : int
+        Vertices removed.
+    stop_reason : str
+        "target_reached", "max_factor", "last_interval", "no_candidates" (stopped short: see
+        ``stop_detail``), "cancelled" (the progress callback said stop) or "error_bound".
+    target_reached : bool
+        False when the run stopped short (a ``TargetNotReachedWarning`` says so too).
+    stop_detail : str
+        When the target was not reached: what keeps the remaining vertices, in words.
+    message : str
+        Warnings about the input (empty if none).
+    rejected : dict of str to int
+        Refused removals, by the check that refused them (fold, edge_exists,
+        triangle_exists, flip, degenerate, fold_over, error_bound); ``rejected_total`` sums them.
+    kept : dict of str to int
+        Vertices kept by a rule: boundary, nonmanifold, locked, high_valence, constrained (on
+        seams or creases where they end, meet or cross).
+    constrained_edges : int
+        Edges kept as polylines (``seams``, ``feature_angle``, split-vertex seams).
+    input_issues : dict of str to int
+        degenerate_faces (dropped), nonfinite_vertices (kept with their neighbours),
+        unreferenced_vertices (kept, untouched), reoriented_faces, welded_vertices (split copies
+        welded for the run, see ``split_vertices``).
+    relaxed_removals : int
+        Removals made once the checks were eased to reach a count target.
+    slid : int
+        Kept vertices that gave their place, after the run, to a removed input vertex nearer
+        the input (their faces kept; every vertex still an input vertex, untouched).
+    boundary_simplified : bool
+        The border was simplified too: kept, it alone would have taken more than a quarter of
+        the faces asked for.
+    max_removed_factor : float
+        The highest priority (local error, mesh units) of a removal made.
+    error_bound, error_bound_percent : float or None
+        The certified symmetric Hausdorff bound, in mesh units and in % of the bounding-box
+        diagonal; None unless ``max_error`` was given.
+    seconds_simplify : float
+        Wall time of the core's run.
+    """
 
     ok: bool
     input_vertices: int
     input_faces: int
+    target_faces: int
+    target_vertices: int
     output_vertices: int
     output_faces: int
     removed: int
@@ -63,7 +147,35 @@ class Report(TypedDict):
 
 @dataclasses.dataclass(frozen=True)
 class Result:
-    """A simplified mesh and where each of its parts comes from in the input."""
+    """A simplified mesh and where each of its parts comes from in the input.
+
+    Attributes
+    ----------
+    vertices : numpy.ndarray
+        (m, 3): the input's rows ``vertex_map`` names, same dtype, same values, bit for bit.
+    faces : numpy.ndarray
+        (k, 3): triangles, indices into ``vertices``, in the input faces' dtype.
+    vertex_map : numpy.ndarray
+        (m,) int64: output vertex -> input vertex; ``colors[r.vertex_map]`` carries any
+        per-vertex data.
+    face_source : numpy.ndarray
+        (k,) int64: the input face an output face is, or -1 for a face the re-triangulation
+        made.
+    corner_source : numpy.ndarray
+        (k, 3) int64: for each output corner, the input corner whose per-corner data (UVs,
+        normals) it takes, as a flat index ``3 * face + corner`` into the input's corners
+        (``uv_per_corner.reshape(-1, 2)[r.corner_source]``): the same vertex, on the same side
+        of every seam. With polygon faces, ``m * face + corner`` for a (p, m) array, or the
+        running count of corners for a list of faces.
+    report : Report
+        What the run did: counts, the target asked, ``stop_reason``, ``target_reached``,
+        ``stop_detail`` and the rest (see ``vrsimplify.Report``).
+    polygons : list of numpy.ndarray or None
+        With polygon faces given: every input polygon the run left untouched whole, every other
+        face a triangle; None for triangles.
+    polygon_source : numpy.ndarray or None
+        With polygon faces: for each of ``polygons`` the input face it is, or -1.
+    """
 
     vertices: np.ndarray
     """(m, 3): the input's rows `vertex_map` names, same dtype, same values, bit for bit."""
@@ -95,20 +207,25 @@ def _array(a, what: str, kinds: str) -> np.ndarray:
     a = np.asarray(a)  # no copy for an ndarray of any layout: the core reads strides
     if a.dtype.kind not in kinds:
         raise ValueError(f"{what} has dtype {a.dtype}, expected "
-                         + ("floats" if kinds == "f" else "integers"))
+                         + ("numbers" if "f" in kinds else "integers"))
     return a
 
 
-def _vertex_array(mesh_vertices) -> np.ndarray:
-    """Vertices as float32/64, copied only when another dtype."""
-    v = _array(mesh_vertices, "vertices", "f")
+def _vertex_array(mesh_vertices, what: str = "mesh_vertices") -> np.ndarray:
+    """Vertices as float32/64, copied only when another dtype (float16, integers, lists)."""
+    v = _array(mesh_vertices, what, "fiu")
+    if v.ndim != 2 or v.shape[1] != 3:
+        raise ValueError(f"{what} must be an (n, 3) array of positions, got shape {v.shape}")
     return v if v.dtype in (np.float32, np.float64) else v.astype(np.float64)
 
 
 def _mesh_arrays(mesh_vertices, mesh_faces) -> tuple[np.ndarray, np.ndarray]:
     """Vertices as float32/64 and faces as 32/64-bit integers, copied only when another dtype."""
     v = _vertex_array(mesh_vertices)
-    f = _array(mesh_faces, "faces", "iu")
+    f = _array(mesh_faces, "mesh_faces", "iu")
+    if f.ndim != 2 or f.shape[1] != 3:
+        raise ValueError("mesh_faces must be a (k, 3) array of triangles, a (k, m) array of "
+                         f"polygons or a list of faces, got shape {f.shape}")
     if f.dtype not in (np.int32, np.int64, np.uint32, np.uint64):
         f = f.astype(np.int64)
     return v, f
@@ -122,9 +239,12 @@ def _target(ratio, faces, vertices, max_error) -> tuple[str, float]:
     if given:
         kind, value = given[0]
         try:
-            return kind, float(value)
+            number = float(value)
         except (TypeError, ValueError):
             raise ValueError(f"{kind} must be a number, got {value!r}") from None
+        if kind != "ratio" and not (number >= 0 and number == int(number)):
+            raise ValueError(f"{kind} must be a count (a whole number >= 0), got {value!r}")
+        return kind, number
     # The bound alone simplifies as far as it allows; with nothing at all, half the faces.
     return ("bound", 0.0) if max_error is not None else ("ratio", 0.5)
 
@@ -182,8 +302,12 @@ def simplify(mesh_vertices, mesh_faces, /, *, ratio: Optional[float] = None,
     the same two positions): "seam" welds them for the run and keeps each side's copies (their
     own data stays exact), "weld" welds them freely (copies that hold nothing but a position),
     "keep" leaves them apart as borders. report["input_issues"]["welded_vertices"] counts them.
-    progress: called with the fraction done; returning False stops (a valid, partial result).
-    Ctrl-C raises KeyboardInterrupt. Bad input or parameters raise ValueError.
+    progress: called with the fraction done; returning False (or any false value but None)
+    stops with a valid, partial result (``stop_reason`` "cancelled"); None goes on, so a
+    callback that only prints needs no return.
+    Ctrl-C raises KeyboardInterrupt. Bad input or parameters raise ValueError naming the
+    parameter; a mesh without faces is bad input. A count target the run cannot reach gives
+    a valid result with more faces and a ``TargetNotReachedWarning``.
     """
     poly = polygons.polygon_faces(mesh_faces)
     fanned = None
@@ -206,6 +330,7 @@ def simplify(mesh_vertices, mesh_faces, /, *, ratio: Optional[float] = None,
         locked, progress, str(split_vertices),
         None if fanned is None else fanned.whole_flags)
     out_faces = out_faces.astype(f.dtype, copy=False)
+    _warn_if_short(report)
     if fanned is None:
         return Result(vertices=v[vertex_map], faces=out_faces, vertex_map=vertex_map,
                       face_source=face_source, corner_source=corner_source, report=report)
@@ -219,10 +344,7 @@ def simplify(mesh_vertices, mesh_faces, /, *, ratio: Optional[float] = None,
 
 def bounding_box_diagonal(vertices) -> float:
     """Length of the bounding box's diagonal of the finite vertices (the unit of "E%")."""
-    v = _array(vertices, "vertices", "f")
-    if v.dtype not in (np.float32, np.float64):
-        v = v.astype(np.float64)
-    return float(_core.bounding_box_diagonal(v))
+    return float(_core.bounding_box_diagonal(_vertex_array(vertices, "vertices")))
 
 
 from .lods import LodLevel, Lods, lods, write_glb  # noqa: E402  (needs _array above)

@@ -1,13 +1,19 @@
 """Loads the MeshLab filter into pymeshlab: after ``import vrsimplify.pymeshlab``,
 
+    ms.meshing_decimation_vertex_removal(targetfacenum=1000)
     ms.apply_filter("meshing_decimation_vertex_removal", targetfacenum=1000)
-    ms.meshing_decimation_vertex_removal(targetfacenum=1000)  # stop reason as text
+
+Both give the same dict: the filter's numbers, ``stop_reason`` as text and ``stop_detail``
+(what the command line's ``why:`` line says), as the numpy API's report. A run that stops short
+of its target warns (``vrsimplify.TargetNotReachedWarning``), as ``vrsimplify.simplify`` does.
 
 The plugin the wheel carries is built for pymeshlab 2025.7 (MeshLab 2025.07, double scalars);
 pymeshlab refuses a plugin of another version, so a mismatch is an ImportError here.
 """
 from __future__ import annotations
 
+import ctypes
+import functools
 import importlib.metadata
 import pathlib
 
@@ -32,14 +38,32 @@ def _load() -> None:
 _load()
 
 
-def apply(ms: pymeshlab.MeshSet, **parameters) -> dict:
-    """Runs the filter on the current mesh: pymeshlab's result dict, with the stop reason as
-    text (the filter can hand pymeshlab numbers only)."""
-    from . import _core
+def _stop_detail() -> str:
+    """The plugin's last stop detail (pymeshlab's result takes numbers only). The plugin is
+    loaded already: dlopen of its path hands back the same library."""
+    try:
+        read = ctypes.CDLL(str(PLUGIN)).vrs_filter_last_stop_detail
+    except (OSError, AttributeError):
+        return ""
+    read.restype = ctypes.c_char_p
+    return (read() or b"").decode("utf-8", "replace")
 
-    result = dict(ms.apply_filter(FILTER, **parameters))
-    result["stop_reason"] = _core.stop_reason_name(int(result["stop_reason"]))
+
+def _finish(result) -> dict:
+    """pymeshlab's numbers as the numpy API's report: the stop reason as text, stop_detail."""
+    from . import _core, _warn_if_short
+
+    result = dict(result)
+    if isinstance(result.get("stop_reason"), int):
+        result["stop_reason"] = _core.stop_reason_name(result["stop_reason"])
+    result["stop_detail"] = _stop_detail()
+    _warn_if_short(result, stacklevel=4)
     return result
+
+
+def apply(ms: pymeshlab.MeshSet, **parameters) -> dict:
+    """Runs the filter on the current mesh: the result as ``vrsimplify.simplify``'s report."""
+    return ms.apply_filter(FILTER, **parameters)
 
 
 def _method(self: pymeshlab.MeshSet, **parameters) -> dict:
@@ -51,3 +75,15 @@ _method.__doc__ = "Simplification: Vertex Removal Decimation (vrsimplify); param
 # pymeshlab makes a MeshSet method of each filter it ships, not of a loaded plugin's: ours too.
 if not hasattr(pymeshlab.MeshSet, FILTER):
     setattr(pymeshlab.MeshSet, FILTER, _method)
+
+# Both call styles give the same dict: apply_filter answers for this filter as the method does.
+if not getattr(pymeshlab.MeshSet.apply_filter, "_vrsimplify", False):
+    _apply_filter = pymeshlab.MeshSet.apply_filter
+
+    @functools.wraps(_apply_filter)
+    def _apply_filter_same_answer(self, filter_name, *args, **kwargs):
+        result = _apply_filter(self, filter_name, *args, **kwargs)
+        return _finish(result) if filter_name == FILTER else result
+
+    _apply_filter_same_answer._vrsimplify = True
+    pymeshlab.MeshSet.apply_filter = _apply_filter_same_answer

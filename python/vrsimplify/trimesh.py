@@ -6,6 +6,8 @@
 """
 from __future__ import annotations
 
+import copy
+
 import numpy as np
 import trimesh
 
@@ -25,7 +27,9 @@ def _visual(mesh: trimesh.Trimesh, r: Result):
         source = np.where(r.face_source >= 0, r.face_source, r.corner_source[:, 0] // 3)
         return trimesh.visual.ColorVisuals(face_colors=visual.face_colors[source])
     if visual.kind == "texture" and getattr(visual, "uv", None) is not None:
-        return trimesh.visual.TextureVisuals(uv=visual.uv[r.vertex_map], material=visual.material)
+        # A copy, as the rest of the result: editing the output's material leaves the input's.
+        return trimesh.visual.TextureVisuals(uv=visual.uv[r.vertex_map],
+                                             material=copy.deepcopy(visual.material))
     return None
 
 

@@ -151,6 +151,15 @@ expect_exit 2 "--max-error needs" "$bin" "$in" "$out/never.ply" --max-error %
 "$bin" "$in" "$out/bound-text.ply" --ratio 0.1 --error-bound | grep -q "^bound: .*certified" && ok ||
   fail "--error-bound prints no bound"
 expect_exit 3 "cannot write" "$bin" "$in" "$out/no/such/dir/x.ply"
+# Nothing to simplify: the same exit code and words in every format (and in Python and MeshLab).
+for ext in obj ply off stl; do
+  : >"$out/empty.$ext"
+  expect_exit 3 "the mesh has no faces" "$bin" "$out/empty.$ext" "$out/never.ply"
+done
+printf 'v 0 0 0\nv 1 0 0\nv 0 1 0\n' >"$out/points.obj"
+expect_exit 3 "the mesh has no faces" "$bin" "$out/points.obj" "$out/never.ply"
+printf 'OFF\n3 0 0\n0 0 0\n1 0 0\n0 1 0\n' >"$out/points.off"
+expect_exit 3 "the mesh has no faces" "$bin" "$out/points.off" "$out/never.ply"
 printf 'OFF\n3 1 0\n0 0 0\n1 0 0\n0 1 0\n3 0 1 7\n' >"$out/bad-index.off"
 "$bin" "$out/bad-index.off" "$out/never.ply" >"$out/o" 2>"$out/e"; code=$?
 [ "$code" -ne 0 ] && [ ! -e "$out/never.ply" ] && ok || fail "out-of-range index in a file accepted (exit $code)"

@@ -194,6 +194,9 @@ TEST(Simplify, StopsShortRatherThanCutTheOutline) {
     EXPECT_NEAR(xy_area2(m), 2 * 64.0, 1e-3) << (lazy ? "lazy" : "eager");
     EXPECT_NE(r.stop_detail.find("stopped short of the target"), std::string::npos)
         << r.stop_detail;
+    // The option named as users write it (Python's max_jump, the command line's --max-jump).
+    EXPECT_NE(r.stop_detail.find("max_jump, --max-jump: 10"), std::string::npos) << r.stop_detail;
+    EXPECT_EQ(r.target_faces, 0u);
     // Lazy, the first jump comes with nothing cheap left; eager prices reach it with three
     // straight outline vertices still to take once eased (the outline stays whole: the area).
     EXPECT_EQ(r.relaxed_removals, lazy ? 0u : 3u);

@@ -1,7 +1,7 @@
 // The files a tiled run keeps in its work directory, and how they are written: every file is
 // written under a temporary name and renamed when complete, so a killed worker leaves either
 // nothing or a whole file (a re-run of its tile simply writes it again).
-//   vertices.bin        the input's positions, float xyz, in input order (for the tiles)
+//   vertices.bin        the input's positions, double xyz, in input order (for the tiles)
 //   faces.bin           the input's triangles, uint32 x3 (level 1 reads it)
 //   keys.bin            their CornerKeys, when the input has per-corner data
 //   polygons.bin        an OBJ's or OFF's faces of more than three corners (PolygonRecord);

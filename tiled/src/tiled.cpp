@@ -158,24 +158,23 @@ Level begin(const std::string& input, const Settings& settings) {
   int64_t max_index = -1, min_index = 0;
   std::vector<std::string> materials;
   std::unique_ptr<RecordWriter> kout;
+  bool beyond = false, have_origin = false; // see sink.vertex
+  double origin[3] = {0, 0, 0};
   {
     RecordWriter vout(dir + "/vertices.bin"), fout(dir + "/faces.bin"), pout(dir + "/polygons.bin");
     StreamSink sink;
-    // The tiles see positions from the first vertex on (float, with the precision of the
-    // mesh's own extent: georeferenced coordinates of 4e6 m would leave a float 0.5 m steps);
-    // the output copies the input's vertices, whatever the tiles saw.
-    double origin[3] = {0, 0, 0};
+    // The tiles see positions as the in-core run does (vrs::float_positions): floats, or, where
+    // a float cannot hold a coordinate (georeferenced scans of 4e6 m would leave a float 0.5 m
+    // steps), from the first vertex whose coordinates are finite on; which, only the whole
+    // file tells: the doubles go to disk, read back as floats once it is known. The output
+    // copies the input's vertices, whatever the tiles saw.
     sink.vertex = [&](const double q[3]) {
-      if (vertices == 0)
-        for (int a = 0; a < 3; ++a)
-          origin[a] = std::isfinite(q[a]) ? q[a] : 0;
-      const float p[3] = {float(q[0] - origin[0]), float(q[1] - origin[1]),
-                          float(q[2] - origin[2])};
-      vout.write(p, 12);
+      if (!have_origin && std::isfinite(q[0]) && std::isfinite(q[1]) && std::isfinite(q[2]))
+        have_origin = true, origin[0] = q[0], origin[1] = q[1], origin[2] = q[2];
+      for (int a = 0; a < 3 && !beyond; ++a)
+        beyond = vrs::beyond_float(q[a]);
+      vout.write(q, 24);
       ++vertices;
-      for (int a = 0; a < 3; ++a)
-        if (std::isfinite(p[a]))
-          box.lo[a] = std::min(box.lo[a], p[a]), box.hi[a] = std::max(box.hi[a], p[a]);
     };
     sink.triangle = [&](const int64_t v[3], const CornerKeys& k) {
       uint32_t t[3];
@@ -277,9 +276,7 @@ Level begin(const std::string& input, const Settings& settings) {
       m.write((name + "\n").data(), name.size() + 1);
     m.commit();
   }
-  if (faces == 0) throw std::runtime_error(input + " has no faces");
-  for (int a = 0; a < 3; ++a)
-    if (!(box.lo[a] <= box.hi[a])) box.lo[a] = box.hi[a] = 0;
+  if (faces == 0) throw std::runtime_error("cannot read " + input + ": the mesh has no faces");
 
   State s;
   s["input"] = input;
@@ -308,16 +305,30 @@ Level begin(const std::string& input, const Settings& settings) {
   s["faces_per_tile"] = num(double(per_tile));
   s["level"] = "1";
   s["stalls"] = "0";
-  for (int a = 0; a < 3; ++a) {
-    s["lo" + std::to_string(a)] = num(box.lo[a]);
-    s["hi" + std::to_string(a)] = num(box.hi[a]);
-  }
   {
+    // The doubles as floats, a block at a time (the rule of vrs::float_positions), and the
+    // box of what the tiles see.
     std::vector<float> positions(3 * vertices);
     std::FILE* f = std::fopen((dir + "/vertices.bin").c_str(), "rb");
-    const size_t got = f ? std::fread(positions.data(), 12, vertices, f) : 0;
+    std::vector<double> block(3 * 65536);
+    size_t got = 0;
+    for (size_t n;
+         f && got < vertices &&
+         (n = std::fread(block.data(), 24, std::min<size_t>(65536, vertices - got), f)) > 0;
+         got += n)
+      for (size_t i = 0; i < 3 * n; ++i) {
+        const float p = float(block[i] - (beyond ? origin[i % 3] : 0.0));
+        positions[3 * got + i] = p;
+        if (std::isfinite(p))
+          box.lo[i % 3] = std::min(box.lo[i % 3], p), box.hi[i % 3] = std::max(box.hi[i % 3], p);
+      }
     if (f) std::fclose(f);
     if (got != vertices) throw std::runtime_error("cannot read back " + dir + "/vertices.bin");
+    for (int a = 0; a < 3; ++a) {
+      if (!(box.lo[a] <= box.hi[a])) box.lo[a] = box.hi[a] = 0;
+      s["lo" + std::to_string(a)] = num(box.lo[a]);
+      s["hi" + std::to_string(a)] = num(box.hi[a]);
+    }
     // A mesh that fits the whole budget is one tile at once (what the last level would be).
     const uint64_t budget = faces <= lone_faces(per_tile) ? faces : per_tile;
     s["tiles"] = num(double(partition(dir, 1, vertices, box, budget, keyed, false,

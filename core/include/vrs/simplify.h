@@ -234,6 +234,8 @@ struct Report {
   bool target_reached = false;
 
   size_t input_vertices = 0, input_faces = 0;
+  // The count asked for (a ratio's face count, rounded), or 0 when the target is not one.
+  size_t target_faces = 0, target_vertices = 0;
   size_t vertices = 0, faces = 0; // output (vertices: referenced ones, plus unreferenced inputs)
   size_t removed = 0;             // vertices removed
   size_t slid = 0;                // kept vertices that gave their place to a removed one
@@ -311,6 +313,17 @@ Options priced_as_input(Options options, size_t input_faces);
 // Length of the diagonal of the bounding box of the finite positions (0 when there is none):
 // the unit of relative errors (CLI --max-error E%, the plugin's MaxError, the benchmark).
 double bounding_box_diagonal(const Mesh& mesh);
+
+// Coordinates read as doubles (a PLY's double properties, a text file's numbers, a float64
+// array), as the core's float positions: every front end reads them through these two, so one
+// input gives one output whatever reads it. A coordinate is beyond a float when it is finite,
+// not a float's value, and not a decimal of at most 7 significant digits (the most a text
+// file's float is written with). When none is, each is rounded to its float; else each is
+// taken relative to the first vertex whose three coordinates are finite, then rounded (the
+// precision a float lacks far from the origin is kept near the mesh). Either way the output's
+// vertices are the input's, untouched: the shift moves nothing but the run's rounding.
+bool beyond_float(double x);
+std::vector<float> float_positions(const double* xyz, size_t vertices);
 
 // The faces as a run with split_vertices Seam or Weld reads them: each corner on the copy that
 // stands for its vertex (the input's triangles when nothing is split). An adapter that finds
