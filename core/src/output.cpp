@@ -66,6 +66,8 @@ void write_output(Mesh& mesh, const SpatialOrder& order, const std::vector<uint8
   std::vector<uint32_t> out(3 * faces);
   rep.face_source.assign(faces, 0);
   rep.corner_source.assign(corner_source.empty() ? 0 : 3 * faces, 0);
+  const Constraints* constraints = records.constraints;
+  rep.constrained_sides.assign(constraints ? faces : 0, 0);
   std::vector<float> bound(fstarts.size() - 1, 0.0f); // each block's largest
   for_each_block(workers, slots, kBlock, [&](size_t begin, size_t end) {
     const size_t b = begin / kBlock;
@@ -79,6 +81,10 @@ void write_output(Mesh& mesh, const SpatialOrder& order, const std::vector<uint8
                                                  : kept_faces[old];
       if (!face_bound.empty()) bound[b] = std::max(bound[b], face_bound[f]);
       if (!corner_source.empty()) std::copy_n(&corner_source[3 * f], 3, &rep.corner_source[3 * at]);
+      if (constraints)
+        for (int c = 0; c < 3; ++c)
+          rep.constrained_sides[at] |=
+              uint8_t(constraints->has(tris[3 * f + c], tris[3 * f + (c + 1) % 3]) << c);
       for (int c = 0; c < 3; ++c) {
         uint32_t v = tris[3 * f + c];
         if (!records.corners.empty()) { // welded: the copy the input corner had
@@ -90,6 +96,10 @@ void write_output(Mesh& mesh, const SpatialOrder& order, const std::vector<uint8
       if (!records.turned.empty() && records.turned[corner_source[3 * f] / 3]) {
         std::swap(out[3 * at + 1], out[3 * at + 2]); // welded: corner sources are kept
         std::swap(rep.corner_source[3 * at + 1], rep.corner_source[3 * at + 2]);
+        if (constraints) { // sides (0 1, 1 2, 2 0) become (0 2, 2 1, 1 0)
+          const uint8_t s = rep.constrained_sides[at];
+          rep.constrained_sides[at] = uint8_t((s >> 2 & 1) | (s & 2) | (s & 1) << 2);
+        }
       }
       ++at;
     }
@@ -139,8 +149,11 @@ void Simplifier::compact() {
   // A welded copy goes where the copy standing for it goes.
   for (size_t i = 0; i < welding_.rep.size(); ++i)
     removed[order_.vertex_new[i]] = removed[order_.vertex_new[welding_.rep[i]]];
+  // Which sides are constrained, read before the triangles leave the run's numbering.
+  const bool sides = opt_.corner_sources && constraints_.active() && fans_.empty();
   write_output(mesh_, order_, removed,
-               {kept_faces_, corner_source_, face_bound_, welding_.corners, welding_.rep, turned_},
+               {kept_faces_, corner_source_, face_bound_, welding_.corners, welding_.rep, turned_,
+                sides ? &constraints_ : nullptr},
                rep_, &workers_);
   if (!opt_.corner_sources) std::vector<uint32_t>().swap(rep_.corner_source);
 }

@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "constraints.h"
 #include "spatial_order.h"
 #include "vrs/simplify.h"
 #include "workers.h"
@@ -27,6 +28,9 @@ struct SlotRecords {
   // none). An output face takes its first corner's (corner_source; its corners all come from
   // one side of the constrained edges, and the edges between orientations are).
   const std::vector<uint8_t>& turned;
+  // Whether an edge (internal numbering) is constrained, for Report::constrained_sides (null:
+  // not asked).
+  const Constraints* constraints = nullptr;
 };
 
 // Rewrites `mesh` (internal order, dead slots holding kNone) as its live part in the input's

@@ -136,6 +136,36 @@ TEST(Constraints, StraightSeamVertexGoesAlongTheSeamAndEachSideKeepsItsWedges) {
   EXPECT_EQ(check_run(in, out, o, r), "");
 }
 
+// A caller that runs the output again (a tiled run's next level) is told which output sides are
+// constrained: values alone may not tell a seam whose two charts agree at both its ends.
+TEST(Constraints, TheOutputSaysWhichOfItsSidesAreConstrained) {
+  vrs::Mesh in = vrs_test::grid(8), out = in;
+  std::vector<int> chart = charts_by_centroid(in, [](float x, float) { return x < 4 ? 0 : 1; });
+  std::vector<uint32_t> seams = seams_between(in, chart);
+  vrs::Options o = with(&seams, 0);
+  o.corner_sources = true;
+  o.target.kind = vrs::TargetKind::Faces;
+  o.target.faces = 40;
+  vrs::Report r = vrs::simplify(out, o);
+  ASSERT_TRUE(r.ok) << r.message;
+  ASSERT_EQ(r.constrained_sides.size(), out.face_count());
+  std::vector<float> x_of(out.vertex_count());
+  for (size_t v = 0; v < r.remap.size(); ++v)
+    if (r.remap[v] != vrs::kRemoved) x_of[r.remap[v]] = in.positions[3 * v];
+  size_t flagged = 0;
+  for (size_t f = 0; f < out.face_count(); ++f)
+    for (int c = 0; c < 3; ++c) {
+      const uint32_t a = out.triangles[3 * f + c], b = out.triangles[3 * f + (c + 1) % 3];
+      const bool on_seam = x_of[a] == 4.0f && x_of[b] == 4.0f; // the column x = 4
+      EXPECT_EQ(bool(r.constrained_sides[f] >> c & 1), on_seam) << "face " << f << " side " << c;
+      flagged += on_seam;
+    }
+  EXPECT_GT(flagged, 0u);
+  o.corner_sources = false; // not asked: none
+  out = in;
+  EXPECT_TRUE(vrs::simplify(out, o).constrained_sides.empty());
+}
+
 TEST(Constraints, SeamCornerWithThreeSeamEdgesIsKept) {
   // Charts: x < 4 is chart 0; x > 4 is split at y = 4 into charts 1 and 2. Vertex (4, 4) has
   // three seam edges (up, down, right).

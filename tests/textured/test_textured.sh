@@ -2,7 +2,8 @@
 # Textured meshes through a host: per-corner texture coordinates must come out on every face,
 # each corner with a value its vertex had, all three from one input chart (textured_mesh.py
 # check). Inputs: bunny00 with synthetic charts as PLY (per-face texcoord lists) and OBJ (vt
-# indices), and assimp's real textured OBJ files. The check is first shown to fail on a
+# indices), pymeshlab's textured bunny (a real UV atlas) and assimp's real textured OBJ files
+# (in core). The check is first shown to fail on a
 # corrupted output, so a pass means something.
 #   test_textured.sh cli VRSIMPLIFY PYTHON CGAL_DATA OUT_DIR
 #   test_textured.sh tiled VRSIMPLIFY PYTHON CGAL_DATA OUT_DIR   (--memory 1M: ~200 tiles)
@@ -18,6 +19,11 @@ verify() { "$python" "$here/textured_mesh.py" check "$1" "$2"; }
 
 make_mesh "$out/bunny_charts.ply" && make_mesh "$out/bunny_charts.obj"
 inputs=("$out/bunny_charts.ply" "$out/bunny_charts.obj")
+# A real textured OBJ of 10 k faces with its UV atlas (pymeshlab's own sample, in the wheel):
+# in tiles of 1 MB it runs six levels, each cutting the charts anew.
+atlas=$("$python" -c 'import os, pymeshlab; print(os.path.join(os.path.dirname(pymeshlab.__file__), "tests", "sample_meshes", "bunny10k_textured.obj"))')
+[ -f "$atlas" ] && cp "$atlas" "${atlas%.obj}.mtl" "$out/" 2>/dev/null
+[ "$mode" = meshlabserver ] || inputs+=("$out/bunny10k_textured.obj")
 case "$mode" in
   cli)
     inputs+=(/usr/share/assimp/models/OBJ/regr01.obj /usr/share/assimp/models/OBJ/spider.obj)
@@ -45,7 +51,7 @@ esac
 
 for input in "${inputs[@]}"; do
   name=$(basename "$input")
-  for ratio in 0.5 0.1; do
+  for ratio in 0.5 0.2 0.1; do
     result="$out/${name%.*}-$ratio.${name##*.}"
     check 'simplify "$input" "$result" "$ratio" && [ -s "$result" ]' "$name at $ratio: no output"
     check 'verify "$input" "$result"' "$name at $ratio: corners lost their texture coordinates"

@@ -29,7 +29,10 @@ struct FaceRecord {
   float p[3][3];
   uint8_t shared;  // bit c: corner c's vertex is also in another tile (a border)
   uint8_t polygon; // 1: an untouched triangle of one of the input's polygons (polygons.bin)
-  uint8_t pad[2];
+  // Bit c: the side from corner c to corner c + 1 was a constrained edge (a seam) of the level
+  // that wrote the record (vrs::Report::constrained_sides); kept, seam or not by its values.
+  uint8_t seam_sides;
+  uint8_t pad;
   uint32_t a[3], b[3], group;
 };
 static_assert(sizeof(FaceRecord) == 80, "records are written as they are");

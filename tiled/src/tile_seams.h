@@ -17,6 +17,7 @@ class CornerValues;
 // and, for an OBJ, the values its vt and vn lines hold (corners then agree by value).
 struct TileKeys {
   std::vector<uint32_t> a, b, group;
+  std::vector<uint8_t> seam_sides; // per face (FaceRecord::seam_sides); empty: none
   const CornerValues* texcoords = nullptr;
   const CornerValues* normals = nullptr;
 };
@@ -26,7 +27,7 @@ struct TileKeys {
 constexpr double kNormalCreaseCos = 0.5; // cos 60 degrees
 
 // Vertex pairs (a0, b0, a1, b1, ...) of the edges whose two faces disagree at either end or
-// differ in group, for Options::constrained_edges.
+// differ in group, or that a face's seam_sides names, for Options::constrained_edges.
 std::vector<uint32_t> tile_seams(const vrs::Mesh& mesh, const TileKeys& keys);
 
 } // namespace vrs::tiled

@@ -370,7 +370,8 @@ void run_tile(const std::string& dir, int level, uint64_t tile, int lone_threads
   TileKeys keys;
   keys.texcoords = &vt, keys.normals = &vn;
   if (keyed)
-    keys.a.resize(3 * in.size()), keys.b.resize(3 * in.size()), keys.group.resize(in.size());
+    keys.a.resize(3 * in.size()), keys.b.resize(3 * in.size()), keys.group.resize(in.size()),
+        keys.seam_sides.resize(in.size());
   for (size_t f = 0; f < in.size(); ++f) {
     for (int c = 0; c < 3; ++c) {
       const uint32_t l = local(in[f].v[c]);
@@ -379,7 +380,7 @@ void run_tile(const std::string& dir, int level, uint64_t tile, int lone_threads
       if (in[f].shared) locked[l] = 1;
       if (keyed) keys.a[3 * f + c] = in[f].a[c], keys.b[3 * f + c] = flat ? 0 : in[f].b[c];
     }
-    if (keyed) keys.group[f] = in[f].group;
+    if (keyed) keys.group[f] = in[f].group, keys.seam_sides[f] = in[f].seam_sides;
   }
   // Polygons' triangles: the slide leaves them as they are, so untouched polygons stay whole.
   std::vector<uint8_t> polygon(in.size(), 0);
@@ -458,6 +459,7 @@ void run_tile(const std::string& dir, int level, uint64_t tile, int lone_threads
       }
     }
     if (keyed) r.group = keys.group[rep.corner_source[3 * f] / 3];
+    r.seam_sides = rep.constrained_sides.empty() ? 0 : rep.constrained_sides[f];
     r.polygon = rep.face_source[f] != vrs::kRemoved && polygon[rep.face_source[f]];
     out.write(&r, record_size(keyed));
   }

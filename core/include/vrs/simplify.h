@@ -296,6 +296,11 @@ struct Report {
   // the same vertex, in a face the new one replaced on the same side of every constrained
   // edge, so with seams constrained the three corners of a face come from one chart.
   std::vector<uint32_t> corner_source;
+  // With Options::corner_sources and constrained edges: per output face, bit c set when its
+  // side from corner c to corner c + 1 (mod 3) is a constrained edge. A caller that runs the
+  // output again (a tiled run's next level) keeps them: two charts may agree on the values at
+  // both ends of a side that is a seam between them, and values alone would lose it.
+  std::vector<uint8_t> constrained_sides;
 };
 
 constexpr uint32_t kRemoved = 0xffffffffu;
