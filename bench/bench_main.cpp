@@ -23,9 +23,10 @@
 // default 1 here, so that runs compare), -intN (N intervals), -projection (the paper's filling
 // only), -boundary (boundary simplified), combinable; qecd, qecd-topology (Preserve Topology on),
 // qecd-keep (QECD with optimal placement off: a half-edge collapse, output vertices are input
-// vertices), qecd-at-ours (QECD to the face count ours ends with: equal size where ours stops
-// short), openmesh (OpenMesh decimater + quadric module), meshopt, vtk. Each run is a child
-// process, so memory high-water marks do not carry over from one run to the next.
+// vertices), qecd-at-M (QECD to the face count method M ends with, e.g. qecd-at-ours,
+// qecd-at-openmesh: equal size where M stops short), openmesh (OpenMesh decimater + quadric
+// module), meshopt, vtk. Each run is a child process, so memory high-water marks do not carry over
+// from one run to the next.
 #include <sys/wait.h>
 #include <unistd.h>
 
@@ -63,15 +64,13 @@ bool run_method(const std::string& method, const vrs::Mesh& in, size_t target,
     r = run_qecd(in, target, /*preserve_topology=*/true);
   else if (method == "qecd-keep")
     r = run_qecd(in, target, /*preserve_topology=*/false, /*optimal_placement=*/false);
-  else if (method == "qecd-at-ours") {
-    // QECD at the face count our default run ends with: where ours stops short of the
-    // target, what MeshLab's filter does with as many faces (the comparison at equal size).
-    PeerResult ours;
-    vrs::Options o;
-    o.threads = 1;
-    o.split_vertices = vrs::SplitVertices::Weld; // as "ours"
-    ours = run_ours(in, target, o);
-    r = run_qecd(in, ours.mesh.face_count());
+  else if (method.rfind("qecd-at-", 0) == 0) {
+    // QECD at the face count another method ends with (qecd-at-ours, qecd-at-openmesh, ...):
+    // where that method stops short of the target, what MeshLab's filter does with as many
+    // faces (the comparison at equal size).
+    PeerResult other;
+    if (!run_method(method.substr(8), in, target, other)) return false;
+    r = run_qecd(in, other.mesh.face_count());
   } else if (method == "openmesh")
     r = run_openmesh(in, target);
   else if (method == "meshopt")

@@ -3,10 +3,11 @@
 
 usage: render_worst.py QUALITY_CSV OUT_DIR VRS_BENCH VRS_RENDER ON_DISPLAY [N]
 
-Takes the N runs (default 10) of "ours" with the highest mean-error ratio to QECD (as
-quality_report.py computes it), runs both again on the same mesh and target (`vrs_bench --save`),
-renders the input, ours and QECD's output from one view, and writes OUT_DIR/NN-set-mesh-ratio.png
-(three panels: input | ours | QECD) and OUT_DIR/worst.md, which quality_report.py includes.
+Takes the N runs (default 10) of "ours" with the highest mean-error ratio to QECD at equal size
+(as quality_report.py computes it: QECD run to the faces ours kept where ours stopped short),
+runs both again on the same mesh and target (`vrs_bench --save`), renders the input, ours and
+QECD's output at the same size from one view, and writes OUT_DIR/NN-set-mesh-ratio.png (three
+panels: input | ours | QECD) and OUT_DIR/worst.md, which quality_report.py includes.
 The mesh files are found by name in the data set's list (scripts/lib/bench_meshes.sh --cad).
 """
 import csv
@@ -55,11 +56,13 @@ def main():
             path = paths.get((s, mesh))
             if path is None:
                 continue
-            subprocess.run([bench, path, "--name", "m", "--ratios", rt, "--methods", "ours,qecd",
+            r, qe = runs[key]["ours"], q.reference(runs[key], "ours", q.EQUAL)
+            reference = qe["method"]  # qecd, or qecd-at-ours where ours stopped short
+            subprocess.run([bench, path, "--name", "m", "--ratios", rt, "--methods", f"ours,{reference}",
                             "--save", tmp], check=True, capture_output=True)
             panels = []
             for label, src in [("input", path), ("ours", f"{tmp}/m_{rt}_ours.ply"),
-                               ("qecd", f"{tmp}/m_{rt}_qecd.ply")]:
+                               ("qecd", f"{tmp}/m_{rt}_{reference}.ply")]:
                 png = f"{tmp}/{label}.png"
                 subprocess.run([on_display, "-s", "-screen 0 1024x768x24", render, src, png,
                                 "--size", "360", "360", "--azimuth", "30", "--elevation", "25"],
@@ -67,12 +70,12 @@ def main():
                 panels.append(png)
             name = f"{i:02d}-{s}-{mesh}-{float(rt):g}.png".replace("^", "").replace("+", "")
             subprocess.run(["convert", *panels, "+append", f"{out_dir}/{name}"], check=True)
-            r, qe = runs[key]["ours"], runs[key]["qecd"]
-            lines.append(f"{i}. **{s}/{mesh} at {float(rt):g}**: mean error {x:.2f}× QECD's "
-                         f"({float(r['error_mean']):.3g} against {float(qe['error_mean']):.3g} of the "
-                         f"diagonal), {r['output_faces']} faces for {r['target_faces']}"
+            lines.append(f"{i}. **{s}/{mesh} at {float(rt):g}**: mean error {x:.2f}× QECD's at "
+                         f"{qe['output_faces']} faces ({float(r['error_mean']):.3g} against "
+                         f"{float(qe['error_mean']):.3g} of the diagonal), ours {r['output_faces']} "
+                         f"faces for {r['target_faces']}"
                          f"{', stopped: ' + r['note'].split(':')[0] if r['note'] else ''}. "
-                         f"Input, ours, QECD:\n\n   ![{mesh}](renders/worst/{name})\n")
+                         f"Input, ours, QECD at the same size:\n\n   ![{mesh}](renders/worst/{name})\n")
     open(f"{out_dir}/worst.md", "w").write("\n".join(lines) + "\n")
 
 

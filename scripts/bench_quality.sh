@@ -7,20 +7,24 @@
 # does), the paper's factor ("ours-factor"), the vertex-keeping class (MeshLab's QECD with
 # optimal placement off, OpenMesh's decimater with its quadric module, meshoptimizer,
 # vtkDecimatePro), MeshLab's QECD with its defaults (the yardstick), with Preserve Topology and
-# at the face count ours ends with (qecd-at-ours: equal size where ours stops short),
+# at the face count each vertex keeper ends with (qecd-at-ours, qecd-at-openmesh, ...: the
+# yardstick where that method stops short of the target),
 # and the core of BASELINE (default: ea2b941, main before the relaxed passes answered to the input; built once into
 # $VRS_CACHE). One job per core (meshes shared out), one thread per run. Writes
 # bench/quality.csv and bench/QUALITY.md (bench/quality_report.py: medians and clamped
 # geometric means, the class table, the held-out meshes apart, the worst runs).
 #   scripts/bench_quality.sh [--samples S] [--baseline COMMIT] [--methods M,..] [--tuning]
-#                            [--csv FILE] [--only NAME...]
+#                            [--csv FILE | --merge] [--ratios R,..] [--only NAME...]
 # --tuning skips the held-out meshes (what a tuning loop may run on); --methods and --csv (a
-# scratch CSV, no report) are for such loops.
+# scratch CSV, no report) are for such loops. --merge runs --methods alone and puts their rows
+# in place of those methods' rows in bench/quality.csv, then writes the report (the other
+# methods' rows, same samples, as they were measured).
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
 cache=${VRS_CACHE:-/var/cache/vrsimplify}
 samples=30000 baseline=ea2b941 only=() tuning=0 csv="" \
-  methods=ours,ours-boundary,ours-factor,qecd,qecd-topology,qecd-keep,qecd-at-ours,openmesh,meshopt,vtk
+  methods=ours,ours-boundary,ours-factor,qecd,qecd-topology,qecd-keep,qecd-at-ours,qecd-at-ours-boundary,openmesh,qecd-at-openmesh,meshopt,qecd-at-meshopt,vtk
+merge=0 ratios=0.5,0.1,0.01
 while [ $# -gt 0 ]; do
   case $1 in
   --samples) samples=$2; shift 2 ;;
@@ -28,6 +32,8 @@ while [ $# -gt 0 ]; do
   --methods) methods=$2; shift 2 ;;
   --tuning) tuning=1; shift ;;
   --csv) csv=$2; shift 2 ;;
+  --merge) merge=1; shift ;;
+  --ratios) ratios=$2; shift 2 ;;
   --only) shift; only=("$@"); break ;;
   *) echo "unknown option $1" >&2; exit 2 ;;
   esac
@@ -56,6 +62,7 @@ files=()
 while IFS= read -r f; do files+=("$f"); done < <("$top/scripts/lib/bench_meshes.sh" --cad)
 report=0
 [ -n "$csv" ] || { csv=$top/bench/quality.csv; report=1; }
+[ "$merge" -eq 0 ] || { [ "$csv" = "$top/bench/quality.csv" ] || { echo "--merge writes bench/quality.csv: no --csv" >&2; exit 2; }; }
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 header="set,mesh,input_faces,open,ratio,target_faces,method,output_faces,output_vertices,seconds,error_max,error_mean,fold_area,note"
@@ -80,7 +87,7 @@ one_mesh() { # file scratch-dir: its rows on stdout
   echo "== $set_name $name ($faces faces)" >&2
   rm -f "$scratch"/*.ply
   {
-    "$bench" "$f" --name "$name" --samples "$samples" \
+    "$bench" "$f" --name "$name" --samples "$samples" --ratios "$ratios" \
       --methods "$methods" 2>/dev/null || true
     # The baseline's rows get their fold-over share from today's measure (same samples).
     [ -z "$base" ] || "$base" "$f" --name "$name" --samples "$samples" --methods ours --save "$scratch" 2>/dev/null |
@@ -102,7 +109,14 @@ for j in $(seq 0 $((jobs - 1))); do
   ) &
 done
 wait
-{ echo "$header"; sort -t, -k1,2 -k5,5r -s "$work"/rows.*; } >"$csv"
+if [ "$merge" -eq 1 ]; then # the other methods' rows as they were, these methods' new ones
+  awk -F, -v m="$methods" 'BEGIN { n = split(m, a, ","); for (i = 1; i <= n; i++) new[a[i]] = 1 }
+    NR > 1 && !($7 in new)' "$csv" >"$work/kept"
+  { echo "$header"; sort -t, -k1,2 -k5,5r -s "$work"/rows.* "$work/kept"; } >"$work/merged"
+  mv "$work/merged" "$csv"
+else
+  { echo "$header"; sort -t, -k1,2 -k5,5r -s "$work"/rows.*; } >"$csv"
+fi
 if [ "$report" -eq 1 ]; then
   # The ten worst runs of ours, rendered beside QECD (bench/renders/worst/).
   python3 "$top/bench/render_worst.py" "$csv" "$top/bench/renders/worst" "$bench" \
