@@ -11,6 +11,10 @@ namespace {
 // loop every few tens of microseconds (a batch of plans, then its rewrites); a sleeping
 // thread takes longer than that to wake, and a loop is over before it is up.
 constexpr auto kSpin = std::chrono::microseconds(200);
+// A thread that came too late to take an item this many loops in a row stops polling and
+// sleeps until woken: on a machine busy with other work its polling only takes the core from
+// the caller, which does the items alone.
+constexpr int kMissesBeforeSleep = 4;
 
 // One wait of a polling loop: a pause at first, then the core given up, so that on a machine
 // busy with other work the threads with work still get their turn.
@@ -69,10 +73,10 @@ Workers::~Workers() {
     t.join();
 }
 
-void Workers::work() {
-  for (;;) {
+bool Workers::work() {
+  for (bool took = false;; took = true) {
     size_t first = next_.fetch_add(grain_, std::memory_order_relaxed);
-    if (first >= n_) return;
+    if (first >= n_) return took;
     for (size_t i = first, end = std::min(n_, first + grain_); i < end; ++i)
       (*fn_)(i);
   }
@@ -80,11 +84,14 @@ void Workers::work() {
 
 void Workers::serve() {
   size_t seen = 0;
+  int misses = 0; // loops in a row this thread joined too late to take an item
   for (;;) {
-    // Poll first, then sleep until the generation moves.
+    // Poll first (unless the last loops were over before this thread came), then sleep
+    // until the generation moves.
     const auto until = std::chrono::steady_clock::now() + kSpin;
     int polls = 0;
-    while (poll_ && generation_.load(std::memory_order_acquire) == seen && !quit_.load() &&
+    while (poll_ && misses < kMissesBeforeSleep &&
+           generation_.load(std::memory_order_acquire) == seen && !quit_.load() &&
            std::chrono::steady_clock::now() < until)
       relax_cpu(polls);
     if (generation_.load(std::memory_order_acquire) == seen) {
@@ -93,8 +100,13 @@ void Workers::serve() {
     }
     if (quit_.load()) return;
     seen = generation_.load(std::memory_order_acquire);
-    work();
-    if (busy_.fetch_sub(1, std::memory_order_acq_rel) == 1 && !poll_) {
+    // Join, then look whether the loop still takes helpers: the caller closes it once every
+    // item is handed out and waits only for those that joined while it was open, never for a
+    // thread the system has not run yet (on a busy machine, one may not run for milliseconds).
+    joined_.fetch_add(1);
+    const bool took = open_.load() && work();
+    misses = took ? 0 : misses + 1;
+    if (joined_.fetch_sub(1) == 1 && !poll_) {
       std::lock_guard<std::mutex> lock(mutex_); // the caller sleeps: wake it
       done_.notify_one();
     }
@@ -189,7 +201,7 @@ void Workers::spread(size_t n, const std::function<void(size_t)>& fn, size_t gra
   n_ = n;
   grain_ = std::max<size_t>(1, grain);
   next_.store(0, std::memory_order_relaxed);
-  busy_.store(int(pool_.size()), std::memory_order_relaxed);
+  open_.store(true);
   {
     // Under the lock, so a thread between its last look and its wait cannot miss the wake.
     std::lock_guard<std::mutex> lock(mutex_);
@@ -197,14 +209,16 @@ void Workers::spread(size_t n, const std::function<void(size_t)>& fn, size_t gra
   }
   wake_.notify_all();
   work();
-  // The others finish their last items; they are running, so poll.
+  // Every item is handed out: no one joins any more. Those that did finish their last items;
+  // they are running, so poll.
+  open_.store(false);
   if (!poll_) {
     std::unique_lock<std::mutex> lock(mutex_);
-    done_.wait(lock, [&] { return busy_.load(std::memory_order_acquire) == 0; });
+    done_.wait(lock, [&] { return joined_.load() == 0; });
     return;
   }
   int polls = 0;
-  while (busy_.load(std::memory_order_acquire) != 0)
+  while (joined_.load() != 0)
     relax_cpu(polls);
 }
 

@@ -53,7 +53,7 @@ class Workers {
 
  private:
   void serve();
-  void work();
+  bool work(); // the current loop's items until none is left; false: it took none
 
   std::vector<std::thread> pool_;
   std::mutex mutex_;
@@ -65,7 +65,10 @@ class Workers {
   size_t n_ = 0, grain_ = 1;
   std::atomic<size_t> next_{0};
   std::atomic<size_t> generation_{0}; // one more per loop handed out
-  std::atomic<int> busy_{0};          // threads of the pool still in the current loop
+  // Threads of the pool that joined the current loop (and may hold items of it); it takes
+  // helpers only while open_, until its last item is handed out.
+  std::atomic<int> joined_{0};
+  std::atomic<bool> open_{false};
   std::atomic<bool> quit_{false};
   double parallel_seconds_ = 0;
   double span_[2] = {0, 0};           // span_seconds(kProjected[i])
