@@ -15,6 +15,11 @@ constexpr auto kSpin = std::chrono::microseconds(200);
 // sleeps until woken: on a machine busy with other work its polling only takes the core from
 // the caller, which does the items alone.
 constexpr int kMissesBeforeSleep = 4;
+// Loops of at most this many chunks (most batches of plans hold four or fewer) run on the
+// caller alone once this many in a row got no help from the pool, but every kProbeEvery-th.
+constexpr size_t kFewChunks = 8;
+constexpr int kUnhelpedBeforeAlone = 4;
+constexpr unsigned kProbeEvery = 32;
 
 // One wait of a polling loop: a pause at first, then the core given up, so that on a machine
 // busy with other work the threads with work still get their turn.
@@ -106,6 +111,7 @@ void Workers::serve() {
     joined_.fetch_add(1);
     const bool took = open_.load() && work();
     misses = took ? 0 : misses + 1;
+    if (took) helped_.store(true, std::memory_order_relaxed);
     if (joined_.fetch_sub(1) == 1 && !poll_) {
       std::lock_guard<std::mutex> lock(mutex_); // the caller sleeps: wake it
       done_.notify_one();
@@ -192,11 +198,17 @@ void Workers::add_rounds(size_t n, size_t grain, bool ranges, double t) {
 }
 
 void Workers::spread(size_t n, const std::function<void(size_t)>& fn, size_t grain) {
-  if (pool_.empty() || n <= grain) { // not worth waking anyone
+  // Not worth waking anyone: one chunk; or a loop of a few chunks while the last such loops
+  // got no help (the other cores busy with other work, or the loops over before a thread
+  // woke), except every kProbeEvery-th, which looks again.
+  const bool few = n <= kFewChunks * std::max<size_t>(1, grain);
+  if (pool_.empty() || n <= grain ||
+      (few && unhelped_ >= kUnhelpedBeforeAlone && ++alone_ % kProbeEvery != 0)) {
     for (size_t i = 0; i < n; ++i)
       fn(i);
     return;
   }
+  helped_.store(false, std::memory_order_relaxed);
   fn_ = &fn;
   n_ = n;
   grain_ = std::max<size_t>(1, grain);
@@ -215,11 +227,17 @@ void Workers::spread(size_t n, const std::function<void(size_t)>& fn, size_t gra
   if (!poll_) {
     std::unique_lock<std::mutex> lock(mutex_);
     done_.wait(lock, [&] { return joined_.load() == 0; });
+    note_help(few);
     return;
   }
   int polls = 0;
   while (joined_.load() != 0)
     relax_cpu(polls);
+  note_help(few);
+}
+
+void Workers::note_help(bool few) {
+  if (few) unhelped_ = helped_.load(std::memory_order_relaxed) ? 0 : unhelped_ + 1;
 }
 
 } // namespace vrs

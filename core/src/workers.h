@@ -69,6 +69,12 @@ class Workers {
   // helpers only while open_, until its last item is handed out.
   std::atomic<int> joined_{0};
   std::atomic<bool> open_{false};
+  // Whether a pool thread took an item of the current loop; the caller's count of loops of a
+  // few chunks in a row that got no help, and of those it then ran alone.
+  std::atomic<bool> helped_{false};
+  int unhelped_ = 0;
+  unsigned alone_ = 0;
+  void note_help(bool few);
   std::atomic<bool> quit_{false};
   double parallel_seconds_ = 0;
   double span_[2] = {0, 0};           // span_seconds(kProjected[i])
