@@ -1,8 +1,8 @@
 // The input behind today's faces: every removed vertex is carried by the face of today's mesh
 // that stands nearest it, so a removal can be judged against the input the old fan stood for
 // (a fold-over against the input, not against faces that may already lean far from it).
-// Pricing by the farthest carried vertex too was measured: the same tail (p90 2.49 against
-// 2.37 without, p95 3.89 against 3.64) for 17 % more time; it is not done.
+// Pricing by the farthest carried vertex too was measured: no better tail for more time
+// (bench/ablation.md); it is not done.
 #pragma once
 
 #include <cstdint>

@@ -502,13 +502,11 @@ bool InputSurface::turned_at(Vec3 x, Vec3 n, const Evaluator& eval, size_t& hint
 
 int InputSurface::grid_side(double covers, int max_side) {
   // The centroids of the triangle's L x L sub-triangles: at L = 2 its centroid and halfway
-  // from there to each corner (four points, not the centroid alone: one missed folds the
-  // benchmark then measured, 1 % p90 of the error ratio 2.40 against 2.04, 14 folded runs
-  // against 5); L grows with the square root of how many input faces it covers, as four
-  // points missed folds on small outputs (tuning set, 1 % p90 1.86 -> 1.69). About a point
-  // every two faces covered, up to 12 x 12 (not one every four, up to 6 x 6): folds of a
-  // tenth of a triangle between the coarser grid's points are seen (tuning set: runs > 1 %
-  // folded where QECD's are not 6 -> 4, the same time; bench/ablation.md).
+  // from there to each corner (four points, not the centroid alone, which missed folds the
+  // benchmark measures); L grows with the square root of how many input faces it covers, as
+  // four points missed folds on small outputs. About a point every two faces covered, up to
+  // 12 x 12 (not one every four, up to 6 x 6): folds of a tenth of a triangle between the
+  // coarser grid's points are seen, in the same time.
   // Clamped before the conversion: a triangle 1e37 times the mean input face (the fuzzer)
   // made a side past any int.
   const double side = std::ceil(std::sqrt(covers) * kGridPerSide);
@@ -548,9 +546,8 @@ double InputSurface::folded_area(const Patch& patch, const Evaluator& eval, doub
     if (!(area >= min_area)) continue;
     const Vec3 n = normalized(area_normal);
     // Cells of a quarter of the budget at most (the finest grid for no budget): a fold that
-    // could pass it spans a few of them. The tuning set's runs more than 1 % folded where
-    // QECD's are not: one; on the full grid none, for twice its small runs' time; on the grid
-    // of folds() (by faces covered) two (bench/ablation.md, 2026-11-29).
+    // could pass it spans a few of them (the full grid: fewer folded runs for twice the small
+    // runs' time; the grid of folds(), by faces covered: more).
     // Clamped before the conversion: a zero or denormal budget makes the side past any int.
     const double side =
         budget < inf ? std::ceil(std::sqrt(kCellsPerBudget * area / budget)) : kGridMax;

@@ -74,10 +74,9 @@ class InputSurface {
 
   // While one lives on a thread, a question there that would build the hierarchy builds
   // nothing: it answers "folds" and wanted() turns true. A loop on the workers plans under
-  // one, so that no thread builds it alone while the others wait (bunny00 x2, parts of
-  // 18 852 vertices: 0.26 s in one part of a round whose parts took 0.03 s, 16 cores projected
-  // 6.8x, deferred 7.7-8.7x; bunny00 x1 at default parts 5.7 -> 7.4x); the caller throws away
-  // what it planned, builds on all the workers, and plans again.
+  // one, so that no thread builds it alone while the others wait (the build takes ten times
+  // a part's round); the caller throws away what it planned, builds on all the workers, and
+  // plans again.
   class Deferral {
    public:
     Deferral();
@@ -97,7 +96,7 @@ class InputSurface {
   // The input face nearest x: its unit normal in `normal` and the squared distance in `d2`.
   // False when there is none (no face with area).
   // `hint` (in and out): a face near x to start from (the last answer for a point close by:
-  // its distance bounds the search at once; the slow case 5.9 -> 5.3 s), then the face found;
+  // its distance bounds the search at once), then the face found;
   // kNoFace for none. Ties may then answer another face as near: folds() asks ties again.
   static constexpr size_t kNoFace = ~size_t(0);
   // The squared distance within which another face counts as as near as one at d2 from x: a
@@ -154,7 +153,7 @@ class InputSurface {
   // hierarchy's 16-bit centroids are scaled to it and clamped: a few vertices at 1e38 (the
   // fuzzer) stretched the scale so far that every other face fell in one step, and the median
   // splits cut the bulk at random (leaves spanning the mesh, most opened by every question:
-  // fuzz/open/'s slow case 8.9 -> 5.9 s). An ordinary mesh's whole range lies within its
+  // fuzz/open/'s slow case). An ordinary mesh's whole range lies within its
   // bulk's: nothing changes.
   static void clamp_to_bulk(const std::function<Vec3(size_t)>& centroid, size_t faces, double* lo,
                             double* hi, Workers* workers = nullptr);

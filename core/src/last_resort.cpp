@@ -16,9 +16,8 @@ template <class Queue> bool Simplifier::relax(Queue& queue, bool after_jump) {
   // First step (when most of the queue's rest is refused by a corner's input normal, at a
   // price jump, or when the queue runs dry): a new triangle may face away from the input's
   // normal at one of its three corners. Thin parts, threads and tunnels are where every
-  // filling has such a corner; taken before a part is dropped, the 10 % runs' p90 of the
-  // mean-error ratio to QECD went 3.9 -> 3.0. Allowed from the start, it crossed CAD creases
-  // for nothing at 50 % (p90 1.7 -> 5.1).
+  // filling has such a corner: better taken than a part dropped. Allowed from the start, it
+  // crossed CAD creases for nothing at 50 %.
   // The last resort, in one place: the input normals asked of one corner of a new triangle
   // only, the outline corners (the evaluation's setting) and, through removable(), the single
   // triangles; and where every filling is refused, the least-cost one is tried. The fold-over
@@ -29,10 +28,9 @@ template <class Queue> bool Simplifier::relax(Queue& queue, bool after_jump) {
   // no new triangle may turn more than 90 degrees from the input face nearest it (the fold-over
   // as the benchmark measures it). Before, only triangles over two input faces whose corners'
   // normals are unsure answer to it (removal.cpp): asked of every plan it cost threaded parts
-  // their thread at 10 % (p90 3.1 -> 3.5 on the 10 % runs). On the tuning set: 1 % p90 of the
-  // mean-error ratio to QECD 3.02 -> 1.87, runs > 1 % folded where QECD's are not 15 -> 3 (a plate
-  // with 16 tunnels stops clean at 268 faces instead of crumpling to 154); the price of a jump is
-  // measured from the removals before the easing.
+  // their thread at 10 %. Asked once eased, it keeps small outputs from folding (a plate with
+  // 16 tunnels stops clean instead of crumpling); the price of a jump is measured from the
+  // removals before the easing.
   if (relax_steps_ == 0) relaxed_from_ = rep_.max_removed_factor;
   // One switch for both sides: the input judges every new triangle (removal.cpp), the faces
   // replaced no longer do (vetoes.cpp). Only where the input is kept: not when the target is

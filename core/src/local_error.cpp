@@ -204,10 +204,9 @@ double patch_error(uint32_t v, const Ring& ring, const Patch& patch, const Evalu
     to_new = d * d;
   }
   const double local = std::sqrt(std::max(worst, to_new)) * std::sqrt(area / reference_area);
-  // Off creases the local price alone: priced so everywhere, bunny00 x2 to 10 % took 1.7x the
-  // time for 4 % more mean error and 19 % more max error; wherever a corner was turned from its
-  // triangle (coarse organic meshes too), mushroom at 1 % lost a fifth of its accuracy and its
-  // target (bench/ablation.md).
+  // Off creases the local price alone: priced so everywhere, a smooth mesh took more time for
+  // more error, and wherever a corner was turned from its triangle (coarse organic meshes too)
+  // small outputs lost accuracy and their target.
   if (!(patch.corner_doubts & kCornerOnCrease) || patch.count == 0) return local;
   const double moved = moved_surface(fan, ring, patch, c, centroid2.data());
   return std::max(local, std::sqrt(local * moved / reference_area));

@@ -91,12 +91,11 @@ Reject Planner::plan(uint32_t v, const Ring& ring, Vec3 n, Patch& out, double& c
     // are unsure (a triangle across a thread's crest stands nearer the next flank: asked of
     // the small ones too, the threads were lost and the tail grew; over two faces, on the
     // full grid, the tuning set folded less but took twice the time). Only unsure corners
-    // ask: a smooth mesh never builds the input's hierarchy (0.35 s and 19 MB at 1.2 M faces;
-    // gated at 18 degrees bunny00 x2 asked 478 times and was refused nothing; ungated, 2-4x
-    // the time), and the tuning set folds as little as at 18 degrees (bench/ablation.md).
+    // ask: a smooth mesh never builds the input's hierarchy (ungated, the run takes several
+    // times as long), and the benchmark folds as little as with a lower gate.
     // Large triangles (a small output's) are asked whatever their corners say, and refused
     // only past a budget of folded area: refused at any fold, the thin CAD shells' 10 % runs
-    // lost more to the error than they gained (bench/ablation.md, 2026-11-29).
+    // lost more to the error than they gained.
     if (why == RejectCount && check_topology && input_) {
       const bool eased = limits_->folds_judged_by_input; // the vetoes eased, the input kept
       // Each new triangle as its first corner's face (the output writes it so).
@@ -218,9 +217,8 @@ Reject Planner::plan(uint32_t v, const Ring& ring, Vec3 n, Patch& out, double& c
   }
   // Every fan and the projection has a triangle some veto refuses: in the last resort, look
   // among all the ring's triangulations for one without (ranked by their triangles' distance
-  // to the old fan). Only there: offered from the start it measured a wash on the whole data
-  // set (at 1 %, lower mean error in 10 runs, higher in 13) for ~15 % more time, and this way
-  // a run that never needs the last resort is what it was without it (bench/ablation.md).
+  // to the old fan). Only there: offered from the start it measured a wash for more time, and
+  // this way a run that never needs the last resort is what it was without it.
   // Closed rings only: on a border ring the new border edge leaves its triangles freer than
   // the old fan can judge (the fuzzer found one folding there over the input).
   if (limits_->least_cost_filling && fans_ && !on_plane_ && ring.closed() && k >= 4) {

@@ -89,8 +89,7 @@ class Planner {
     input_ = input;
     turned_ = turned;
     // Where pieces are held turned from how they were written, the corners' normals are the
-    // run's, blind to a fold as written: where they doubt, small triangles are asked too
-    // (boeing at 10 %: 1.09 -> 0.77 % folded; no other mesh of the benchmark has such pieces).
+    // run's, blind to a fold as written: where they doubt, small triangles are asked too.
     input_covers_ = turned.any() ? 0.0 : kInputCheckCovers;
   }
   static constexpr double kInputCheckCovers = 8.0;

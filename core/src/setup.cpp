@@ -76,8 +76,7 @@ bool Simplifier::border_needs_simplifying() {
     border += c.first, used += c.second;
   // Keeping B border vertices, a surface of V vertices and F faces needs 2B - 2V + F faces
   // at least (Euler). Past a quarter of the target, the interior is all that is left to spend
-  // (open meshes: p95 of the mean-error ratio to QECD 8.1 -> 3.7; a half or the whole target
-  // as the threshold did less, 3.7 and 7.3).
+  // (a half or the whole target as the threshold left open meshes' tail worse).
   return border_takes(border, used, 0.25);
 }
 
@@ -134,9 +133,8 @@ void Simplifier::first_prices(UninitVector<uint8_t>& kinds, UninitVector<FirstPr
       },
       1024);
   reference_area_ = mean_triangle_area(mesh_.positions.data(), t, &workers_);
-  // A thousandth of the area asked, a patch refused past a two-thousandth folded (tuning set,
-  // bench/ablation.md, 2026-11-29: runs > 1 % folded where QECD's are not 4 -> 1, median
-  // 1.031 -> 1.028; refused at any folded point, the thin CAD shells lost more error).
+  // A thousandth of the area asked, a patch refused past a two-thousandth folded (refused at
+  // any folded point, the thin CAD shells lost more error than the folds cost).
   const double input_area = reference_area_ * double(t.size() / 3);
   limits_.large_triangle_area = 1e-3 * input_area;
   limits_.fold_budget = 5e-4 * input_area;

@@ -155,7 +155,7 @@ template <class Queue> void Simplifier::run(Queue& queue) {
     reprice(queue);
     // Most of what is left refused only by a corner's input normal (threads, thin walls,
     // tunnels): take those, one corner facing away allowed, before the cheapest rest drops a
-    // part (CAD at 10 %: p90 of the mean-error ratio to QECD 5.7 -> 4.1; 50 % unchanged).
+    // part.
     if (counts && relax_steps_ == 0 && opt_.relax_to_reach_target && flip_refused_ > queue.size() &&
         relax(queue, false))
       continue;

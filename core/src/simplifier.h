@@ -40,8 +40,7 @@ class Simplifier {
     limits_.min_normal_cos = std::cos(opt.max_normal_angle_deg * 3.14159265358979323846 / 180);
     // The local error prices an outline corner's removal (its distance to the new patch, over
     // the fan's area): the corner rule is the factor's. Kept, it left small open pieces (hair
-    // strips, a shark's holes) dense until the last resort, while the rest paid for them:
-    // tuning set p95 of the mean-error ratio to QECD 2.93 -> 2.28 (bench/QUALITY.md).
+    // strips, a shark's holes) dense until the last resort, while the rest paid for them.
     if (opt.priority != Priority::Factor) eval_.set_boundary_corner_cos(-1.0);
   }
   Simplifier(const Simplifier&) = delete;
@@ -214,9 +213,8 @@ class Simplifier {
   double relaxed_from_ = 0;
   double jump_base() const { return eased() ? relaxed_from_ : rep_.max_removed_factor; }
   // Once eased, half the jump: at the whole of it the eased passes' last removals flattened
-  // steps and thin walls that no veto sees (boeing at 10 %: mean error 0.0009 -> 0.0016 for the
-  // last 40 faces). On the tuning set, runs off target 85 -> 88 of 342, every error figure
-  // better (max-error gmean 0.515 -> 0.494, CAD p90 2.57 -> 2.40); at 0.4, 92 off target.
+  // steps and thin walls that no veto sees, for a few more faces kept; a smaller share stops
+  // more runs short.
   static constexpr double kEasedJumpShare = 0.5;
   double jump_bar() const { return opt_.max_price_jump * (eased() ? kEasedJumpShare : 1.0); }
   // Whether removing v at `price` would be such a jump (with a count target).

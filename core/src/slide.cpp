@@ -1,8 +1,7 @@
 // After the run (Options::slide): a kept interior vertex may give its place to a removed input
 // vertex its faces carry, where its fan then stands nearer the input both ways and no face
 // folds. The connectivity stays; the output's vertices stay input vertices, untouched. Each
-// removal priced its last step only; this looks at the input itself, where error piled up
-// (bench/ablation.md: whole set p90 1.91 -> 1.82, p95 2.18 -> 2.04, max-error p90 1.29 -> 1.16).
+// removal priced its last step only; this looks at the input itself, where error piled up.
 #include <algorithm>
 #include <cmath>
 #include <limits>
@@ -21,9 +20,8 @@ constexpr int kSlideTries = 16;   // places ranked by the input planes' quadric,
 constexpr int kSlideMeasured = 3; // of those, the nearest the input's points measured both ways
 constexpr size_t kSlideRound = 4096;
 // Fans tried at most: those where the input stands farthest. Every fan of an output up to
-// ~2 000 faces (the whole tail of bench/QUALITY.md: its runs past 2x keep under 1 000); 2 000
-// fans gave the tuning set's median 1.029 against 1.034, its tail the same, for twice the
-// slide's time (0.2 ms a fan: at 75 k faces the run's own time again).
+// ~2 000 faces (the benchmark's tail keeps under 1 000); 2 000 fans gained little for twice
+// the slide's time.
 constexpr size_t kSlideFans = 1000;
 
 // The fan of a ring around x: triangle i is (ring[i], ring[i + 1], x), in the ring's order.
@@ -268,8 +266,7 @@ uint32_t Simplifier::slide_choice(uint32_t v, const Ring& ring) const {
     const double s =
         near[ni].in + measure_against(trial, local, folds, best - near[ni].in, false, &far);
     if (!(s < best) || folds) continue;
-    // The mean nearer, not the max farther: unbounded, the whole set's max-error ratio to
-    // QECD went from a clamped gmean of 0.493 to 0.508 (p90 1.29 -> 1.36).
+    // The mean nearer, not the max farther: unbounded, the max error grew.
     if (std::max(far, near[ni].far) > far_now) continue;
     best = s;
     chosen = u;

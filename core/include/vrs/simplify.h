@@ -57,8 +57,7 @@ enum class QueueKind : uint8_t { Intervals, Heap };
 // Mapping from evaluation factor to interval. Linear splits [0, f_max] evenly, as the paper;
 // Logarithmic (the default) splits [f_max * 1e-6, f_max] evenly in log(f), 1.4 % apart at 1000
 // intervals. Prices span decades (a CAD part's arcs cost a thousandth of its corners): linear
-// intervals put them all in the first one, whose FIFO then strips one arc after another
-// (bench/QUALITY.md: CAD p90 of the mean-error ratio to QECD 4.6 -> 3.5, 50 % runs > 3x 3 -> 0).
+// intervals put them all in the first one, whose FIFO then strips one arc after another.
 enum class IntervalMapping : uint8_t { Linear, Logarithmic };
 
 // What the hash table sorts by. Factor is the paper's evaluation factor (the vertex's mean
@@ -146,8 +145,8 @@ struct Options {
   bool lazy_reevaluation = true;
   // Lazy re-evaluation only on meshes of at least this many faces: smaller ones are priced at
   // once, where the whole run takes a fraction of a second and eager prices order it better
-  // (bench/ablation.md: 2-5 % less mean error at 50 and 10 %, up to 17 % at 1 %, for about
-  // twice the time). 0: lazy_reevaluation alone decides.
+  // (less mean error, most at low targets, for about twice the time; CHANGELOG.md).
+  // 0: lazy_reevaluation alone decides.
   size_t lazy_from_faces = 20000;
   // Fold-overs judged against the input, not only against faces that may already lean far
   // from it. With Priority::LocalError: each removed vertex is carried by the face nearest it,
