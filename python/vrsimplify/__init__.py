@@ -277,37 +277,71 @@ def simplify(mesh_vertices, mesh_faces, /, *, ratio: Optional[float] = None,
     """Simplifies a triangle or polygon mesh by removing vertices; the input arrays are left
     untouched.
 
-    mesh_vertices: (n, 3) float32 or float64; mesh_faces: (k, 3) int32 or int64 (any integer),
-    or polygons: a (k, m) array (quads: m = 4) or a sequence of faces of any lengths, each
-    fanned from its first corner; the polygons the run leaves untouched come back whole in
-    ``Result.polygons``, and ``face_source``/``corner_source`` then name input polygons and
-    their corners.
-    Target, at most one: ``ratio`` of the faces kept (default 0.5), ``faces`` or ``vertices``
-    (counts). ``max_error``: a guaranteed symmetric Hausdorff bound, in mesh units or as a
-    string "E%" of the bounding-box diagonal; alone it simplifies as far as the bound allows,
-    with a count target whichever comes first; ``math.inf`` reports the certified bound
-    without limiting (``report["error_bound"]``).
-    mode: "surface" (3D), "terrain" (2.5D, XY plane) or "planar" (2D).
-    threads: 0 = every hardware thread; the output is the same for any number.
-    simplify_boundary: also remove border vertices (kept by default, unless the kept border
-    alone would take more than a quarter of the faces asked for: report["boundary_simplified"]).
-    keep_boundary: keep every border vertex whatever the target (the paper's rule).
-    max_jump: stop short of a count target rather than take a removal costing this many times
-    the dearest one so far (a part dropped, a tunnel pressed flat), half as many once the
-    vetoes are eased; 0: the target at any cost.
-    feature_angle: keep edges whose faces turn more than this many degrees apart (0: off).
-    seams: (s, 2) vertex pairs kept as polylines (texture seams, material borders).
-    locked: boolean mask, one entry per vertex: those vertices stay.
-    split_vertices: vertices written twice at one position along a seam (two border edges at
-    the same two positions): "seam" welds them for the run and keeps each side's copies (their
-    own data stays exact), "weld" welds them freely (copies that hold nothing but a position),
-    "keep" leaves them apart as borders. report["input_issues"]["welded_vertices"] counts them.
-    progress: called with the fraction done; returning False (or any false value but None)
-    stops with a valid, partial result (``stop_reason`` "cancelled"); None goes on, so a
-    callback that only prints needs no return.
-    Ctrl-C raises KeyboardInterrupt. Bad input or parameters raise ValueError naming the
-    parameter; a mesh without faces is bad input. A count target the run cannot reach gives
-    a valid result with more faces and a ``TargetNotReachedWarning``.
+    Parameters
+    ----------
+    mesh_vertices : array_like, (n, 3)
+        Positions, float32 or float64 (other numbers are read as float64).
+    mesh_faces : array_like
+        (k, 3) triangles of any integer dtype, or polygons: a (k, m) array (quads: m = 4) or a
+        sequence of faces of any lengths, each fanned from its first corner; the polygons the
+        run leaves untouched come back whole in ``Result.polygons``, and ``face_source`` /
+        ``corner_source`` then name input polygons and their corners.
+    ratio : float, optional
+        The share of the faces to keep, in [0, 1] (the default target: 0.5).
+    faces, vertices : int, optional
+        A count to reach instead (at most one of ratio, faces and vertices).
+    max_error : float or str, optional
+        A guaranteed symmetric Hausdorff bound, in mesh units or as a string "E%" of the
+        bounding-box diagonal; alone it simplifies as far as the bound allows, with a count
+        target whichever comes first; ``math.inf`` reports the certified bound without limiting
+        (``report["error_bound"]``).
+    mode : {"surface", "terrain", "planar"}
+        3D, 2.5D (the XY plane) or 2D.
+    threads : int
+        0 = every hardware thread; the output is the same for any number.
+    simplify_boundary : bool
+        Also remove border vertices (kept by default, unless the kept border alone would take
+        more than a quarter of the faces asked for: ``report["boundary_simplified"]``).
+    keep_boundary : bool
+        Keep every border vertex whatever the target (the paper's rule).
+    max_jump : float
+        Stop short of a count target rather than take a removal costing this many times the
+        dearest one so far (a part dropped, a tunnel pressed flat), half as many once the
+        vetoes are eased; 0: the target at any cost.
+    feature_angle : float
+        Keep edges whose faces turn more than this many degrees apart (0: off).
+    seams : array_like, (s, 2), optional
+        Vertex pairs kept as polylines (texture seams, material borders).
+    locked : array_like of bool, (n,), optional
+        Those vertices stay.
+    progress : callable, optional
+        Called with the fraction done; returning False (or any false value but None) stops
+        with a valid, partial result (``stop_reason`` "cancelled"); None goes on, so a
+        callback that only prints needs no return.
+    split_vertices : {"seam", "weld", "keep"}
+        Vertices written twice at one position along a seam (two border edges at the same two
+        positions): "seam" welds them for the run and keeps each side's copies (their own data
+        stays exact), "weld" welds them freely (copies that hold nothing but a position),
+        "keep" leaves them apart as borders. ``report["input_issues"]["welded_vertices"]``
+        counts them.
+
+    Returns
+    -------
+    Result
+        The output and where each of its vertices, faces and corners comes from.
+
+    Raises
+    ------
+    ValueError
+        Bad input or parameters, naming the parameter; a mesh without faces.
+    KeyboardInterrupt
+        Ctrl-C, at any point of the run (the run goes on a thread of its own).
+
+    Warns
+    -----
+    TargetNotReachedWarning
+        A count target the run cannot reach: the result is valid, with more faces, and the
+        warning gives the faces asked and kept and why.
     """
     poly = polygons.polygon_faces(mesh_faces)
     fanned = None

@@ -62,13 +62,30 @@ def lods(mesh_vertices, mesh_faces, ratios: Sequence[float], /, *, mode: str = "
          corner_keys=None) -> Lods:
     """Simplifies to every ratio in one nested run (each level from the finer one).
 
-    ratios: shares of the input's faces in (0, 1]; 1 keeps the input as a level. ``mode``,
-    ``threads``, ``simplify_boundary``, ``keep_boundary``, ``max_jump``, ``feature_angle`` and
-    ``seams`` are ``simplify``'s. ``corner_keys``: (faces, 3) integers, equal where two corners
-    carry the same per-corner data (texture coordinates, normals): edges across which they
-    differ are seams every level keeps. Each level's vertices are a subset of the finer
-    level's; its error adds to the finer level's (each is measured against the level it was
-    made from). Bad input or parameters raise ValueError.
+    Each level's vertices are a subset of the finer level's; its error adds to the finer
+    level's (each is measured against the level it was made from).
+
+    Parameters
+    ----------
+    mesh_vertices, mesh_faces : array_like
+        As ``vrsimplify.simplify``'s (triangles).
+    ratios : sequence of float
+        Shares of the input's faces in (0, 1]; 1 keeps the input as a level.
+    mode, threads, simplify_boundary, keep_boundary, max_jump, feature_angle, seams
+        As ``vrsimplify.simplify``'s.
+    corner_keys : array_like, (faces, 3), optional
+        Integers, equal where two corners carry the same per-corner data (texture coordinates,
+        normals): edges across which they differ are seams every level keeps.
+
+    Returns
+    -------
+    Lods
+        The shared vertex order, coarsest level first, and the levels.
+
+    Raises
+    ------
+    ValueError
+        Bad input or parameters.
     """
     from . import _array, _mesh_arrays
 
@@ -108,16 +125,37 @@ def write_glb(path, mesh_vertices, chain: Lods, /, *, normals=None, colors=None,
     """Writes every level of ``chain`` (of ``mesh_vertices``) as one binary glTF 2.0 file.
 
     One vertex buffer shared by all levels, coarsest level first; one index buffer per level;
-    the levels bound by MSFT_lod. Per-vertex data, indexed like ``mesh_vertices``: ``normals``
-    (n, 3), ``colors`` (n, 3 or 4, floats in [0, 1] or 8-bit integers), ``uvs`` (n, 2). Per
-    corner, indexed like the input's faces (faces, 3, ...) or (3 * faces, ...):
-    ``corner_normals``, ``corner_colors``, ``corner_uvs`` (they take precedence); a vertex whose corners differ becomes one glTF vertex per distinct corner. ``texture``: the
-    base color image, as a path relative to the file. ``level_errors``: one number per level
-    (finest first), recorded in its mesh's extras and shown by the viewer page. ``compress``:
-    EXT_meshopt_compression (meshoptimizer's codec, lossless: positions stay the input's
-    floats; the levels still stream coarsest first). Returns the layout: ``file_bytes``,
-    ``compressed`` and per level ``faces``, ``vertices``, ``bytes_to_draw`` (what a reader
-    with range requests fetches to draw it). Written whole or not at all.
+    the levels bound by MSFT_lod. Written whole or not at all.
+
+    Parameters
+    ----------
+    path : str or os.PathLike
+        The ``.glb`` to write.
+    mesh_vertices : array_like, (n, 3)
+        The input's positions (the chain's vertices index them).
+    chain : Lods
+        What ``vrsimplify.lods`` returned for them.
+    normals, colors, uvs : array_like, optional
+        Per vertex, indexed like ``mesh_vertices``: normals (n, 3), colors (n, 3 or 4, floats
+        in [0, 1] or 8-bit integers), texture coordinates (n, 2).
+    corner_normals, corner_colors, corner_uvs : array_like, optional
+        Per corner, indexed like the input's faces, (faces, 3, ...) or (3 * faces, ...); they
+        take precedence. A vertex whose corners differ becomes one glTF vertex per distinct
+        corner.
+    texture : str, optional
+        The base color image, as a path relative to the file.
+    level_errors : sequence of float, optional
+        One number per level (finest first), recorded in its mesh's extras and shown by the
+        viewer page.
+    compress : bool
+        EXT_meshopt_compression (meshoptimizer's codec, lossless: positions stay the input's
+        floats; the levels still stream coarsest first).
+
+    Returns
+    -------
+    dict
+        The layout: ``file_bytes``, ``compressed`` and per level ``faces``, ``vertices``,
+        ``bytes_to_draw`` (what a reader with range requests fetches to draw it).
     """
     from . import _array
 

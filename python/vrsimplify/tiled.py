@@ -51,24 +51,52 @@ def simplify(src: Union[str, os.PathLike], dst: Union[str, os.PathLike], *, rati
              keep_workdir: bool = False, split_vertices: Optional[str] = None) -> dict:
     """Simplifies the file `src` to `ratio` of its faces into `dst`, in tiles.
 
-    dst is written in src's own format (.ply, .obj, .off; another is refused before any
-    work): each vertex copied as src holds it (every property, in its own precision), each
-    corner with its input corner's data (OBJ vt/vn, PLY texcoord), OBJ materials kept.
-    memory: the budget a tile is cut for ("2G", "512M" or bytes); a tile takes a quarter of
-    it. The tiles, and so the output, depend on it alone, not on who runs them.
-    client: a dask.distributed Client: tiles become its tasks (retried `retries` times if a
-    worker dies); without one they run on `workers` local processes (0: the cores, at most 4).
-    workdir: where the tile files go, in a fresh folder made there and removed afterwards
-    (unless keep_workdir; default: dst's folder; about 70 bytes a face). With a client, a path
-    every worker can reach, or an fsspec URL (s3://bucket/tmp, file:///shared/tmp...): the
-    driver then keeps its files in dst's folder and the workers fetch and return tiles.
-    progress: print each level's tiles and times to stderr.
-    split_vertices: vertices written twice at one position along a seam, as in
-    vrsimplify.simplify: "seam" (each side keeps its own copies), "weld" (welded freely) or
-    "keep" (left apart, as borders); None chooses as the command line does: "weld" when the
-    vertices hold nothing but a position and no face holds per-corner data, else "seam".
-    Returns counts and times; raises ValueError with the reason (a malformed file, a full disk,
-    an unwritable work directory) and leaves no output file behind.
+    ``dst`` is written in ``src``'s own format (.ply, .obj, .off; another is refused before any
+    work): each vertex copied as ``src`` holds it (every property, in its own precision), each
+    corner with its input corner's data (OBJ vt/vn, PLY texcoord), OBJ materials kept. A mesh
+    the budget holds is one tile, whose output is the in-core run's (tested byte for byte on
+    meshes of positions).
+
+    Parameters
+    ----------
+    src, dst : str or os.PathLike
+        The input file and the output file.
+    ratio : float
+        The share of the faces to keep.
+    memory : str or int
+        The budget a tile is cut for ("2G", "512M" or bytes); a tile takes a quarter of it. The
+        tiles, and so the output, depend on it alone, not on who runs them.
+    client : dask.distributed.Client, optional
+        Tiles become its tasks (retried ``retries`` times if a worker dies); without one they
+        run on ``workers`` local processes (0: the cores, at most 4).
+    workdir : str, optional
+        Where the tile files go, in a fresh folder made there and removed afterwards (unless
+        ``keep_workdir``; default: ``dst``'s folder; about 70 bytes a face). With a client, a path
+        every worker can reach, or an fsspec URL (s3://bucket/tmp, file:///shared/tmp...): the
+        driver then keeps its files in ``dst``'s folder and the workers fetch and return tiles.
+    workers, retries : int
+        Local worker processes; retries of a task whose worker died.
+    progress : bool
+        Print each level's tiles and times to stderr.
+    keep_workdir : bool
+        Leave the work directory in place (to look at the tiles).
+    split_vertices : {"seam", "weld", "keep"}, optional
+        Vertices written twice at one position along a seam, as in ``vrsimplify.simplify``;
+        None chooses as the command line does: "weld" when the vertices hold nothing but a
+        position and no face holds per-corner data, else "seam".
+
+    Returns
+    -------
+    dict
+        Counts and times: ``input_faces``, ``output_faces``, ``target_faces``,
+        ``target_reached``, ``stop_reason``, ``levels`` (each level's tiles, faces and time),
+        ``seconds``.
+
+    Raises
+    ------
+    ValueError
+        With the reason (a malformed file, a full disk, an unwritable work directory); no
+        output file is left behind.
     """
     src, dst = os.fspath(src), os.fspath(dst)
     refusal = _core.tiled_output_refusal(src, dst)  # before any work: never a PLY in a .off

@@ -96,11 +96,13 @@ ls "$out"/.vrsimplify-* >/dev/null 2>&1 && fail "a temporary file was left behin
 export VRS_PYTHON=$python
 # Served from beside its texture: the server hands out only what lies in the .glb's folder.
 "$bin" "$out/tex/bunny.obj" "$out/tex/bunny.glb" --lods 4 >/dev/null || fail "textured --lods 4 beside its texture"
+"$bin" "$out/tex/bunny.obj" "$out/tex/bunny-c.glb" --lods 4 --compress >/dev/null ||
+  fail "textured --lods 4 --compress beside its texture"
 node "$here/browser_test.mjs" "$top/python/vrsimplify/serve.py" "$out/tex/bunny.glb" \
   "$out/browser-bunny" --throttle 1000000 --max-first 0.2 || fail "browser: textured bunny"
 node "$here/browser_test.mjs" "$top/python/vrsimplify/serve.py" "$out/elephant.glb" \
   "$out/browser-elephant" --throttle 300000 --max-first 0.1 || fail "browser: elephant"
-node "$here/browser_test.mjs" "$top/python/vrsimplify/serve.py" "$out/tex/sub/bunny-c.glb" \
+node "$here/browser_test.mjs" "$top/python/vrsimplify/serve.py" "$out/tex/bunny-c.glb" \
   "$out/browser-bunny-c" --throttle 300000 --max-first 0.3 || fail "browser: compressed textured bunny"
 node "$here/browser_test.mjs" "$top/python/vrsimplify/serve.py" "$out/elephant-c.glb" \
   "$out/browser-elephant-c" --throttle 100000 --max-first 0.15 || fail "browser: compressed elephant"
