@@ -14,12 +14,14 @@ default thread count against one thread with another process keeping a core busy
 """
 import csv
 import datetime
-import math
 import os
 import platform
 import statistics
 import sys
 from collections import defaultdict
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from quality_report import quantile  # noqa: E402  (one quantile for every report)
 
 BEGIN, END = "<!-- real meshes: bench/speed_corpus_report.py -->", "<!-- end of real meshes -->"
 
@@ -32,15 +34,6 @@ def splice(path, section):
     title, _, rest = text.partition("\n")
     rest = rest.lstrip("\n")
     open(path, "w").write(f"{title}\n\n{BEGIN}\n{section}{END}\n\n{rest}")
-
-
-def quantile(v, q):
-    v = sorted(v)
-    if not v:
-        return float("nan")
-    x = q * (len(v) - 1)
-    i = int(math.floor(x))
-    return v[i] if i + 1 >= len(v) else v[i] + (x - i) * (v[i + 1] - v[i])
 
 
 def machine():
