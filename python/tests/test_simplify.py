@@ -369,3 +369,40 @@ def test_a_mesh_of_nan_says_why_its_vertices_stay():
         r = vrsimplify.simplify(v, f, ratio=0.1)
     assert len(r.faces) == len(f)
     assert "NaN" in r.report["stop_detail"] and "locked" not in r.report["stop_detail"]
+
+
+def _grid(n=16):
+    x, y = np.meshgrid(np.arange(n + 1.0), np.arange(n + 1.0))
+    v = np.stack([x.ravel(), y.ravel(), 0.1 * np.sin(x.ravel()) * np.cos(y.ravel())], axis=1)
+    i = np.arange(n * (n + 1)).reshape(n, n + 1)[:, :n].ravel()
+    return v, np.concatenate([np.stack([i, i + 1, i + n + 2], 1), np.stack([i, i + n + 2, i + n + 1], 1)])
+
+
+def test_boundary_and_target_keywords():
+    """boundary="auto"|"keep"|"simplify" and target_faces / target_vertices; the old names still
+    work, with a DeprecationWarning, and contradict each other loudly."""
+    import warnings
+    v, f = _grid()
+    keep = vrsimplify.simplify(v, f, target_faces=40, boundary="keep")
+    with pytest.warns(DeprecationWarning, match="boundary="):
+        old = vrsimplify.simplify(v, f, target_faces=40, keep_boundary=True)
+    assert np.array_equal(keep.faces, old.faces) and np.array_equal(keep.vertex_map, old.vertex_map)
+    simplified = vrsimplify.simplify(v, f, target_faces=40, boundary="simplify")
+    assert simplified.report["boundary_simplified"] or len(simplified.faces) <= 40
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore", DeprecationWarning)
+        with pytest.raises(ValueError, match="exclude each other"):
+            vrsimplify.simplify(v, f, simplify_boundary=True, keep_boundary=True)
+        with pytest.raises(ValueError, match="at most one of .* got target_faces and faces"):
+            vrsimplify.simplify(v, f, target_faces=40, faces=40)
+        with pytest.raises(ValueError, match="boundary= alone"):
+            vrsimplify.simplify(v, f, boundary="keep", keep_boundary=True)
+    with pytest.raises(ValueError, match='boundary must be "auto", "keep" or "simplify"'):
+        vrsimplify.simplify(v, f, boundary="glue")
+    with pytest.raises(ValueError, match="target_faces must be a count"):
+        vrsimplify.simplify(v, f, target_faces=10.5)
+    with pytest.warns(DeprecationWarning, match="use target_faces="):
+        old = vrsimplify.simplify(v, f, faces=100)
+    new = vrsimplify.simplify(v, f, target_faces=100)
+    assert np.array_equal(old.faces, new.faces) and new.report["target_faces"] == 100
+    assert vrsimplify.simplify(v, f, target_vertices=50).report["target_vertices"] == 50

@@ -231,19 +231,21 @@ def _mesh_arrays(mesh_vertices, mesh_faces) -> tuple[np.ndarray, np.ndarray]:
     return v, f
 
 
-def _target(ratio, faces, vertices, max_error) -> tuple[str, float]:
-    given = [(k, v) for k, v in (("ratio", ratio), ("faces", faces), ("vertices", vertices))
-             if v is not None]
+def _target(targets: dict, max_error) -> tuple[str, float]:
+    """(kind, value) from the targets the caller gave, {keyword as written: value}."""
+    given = [(name, v) for name, v in targets.items() if v is not None]
     if len(given) > 1:
-        raise ValueError("give at most one of ratio, faces and vertices")
+        raise ValueError("give at most one of ratio, target_faces and target_vertices, got "
+                         + " and ".join(name for name, _ in given))
     if given:
-        kind, value = given[0]
+        name, value = given[0]
+        kind = "ratio" if name == "ratio" else "faces" if name.endswith("faces") else "vertices"
         try:
             number = float(value)
         except (TypeError, ValueError):
-            raise ValueError(f"{kind} must be a number, got {value!r}") from None
+            raise ValueError(f"{name} must be a number, got {value!r}") from None
         if kind != "ratio" and not (number >= 0 and number == int(number)):
-            raise ValueError(f"{kind} must be a count (a whole number >= 0), got {value!r}")
+            raise ValueError(f"{name} must be a count (a whole number >= 0), got {value!r}")
         return kind, number
     # The bound alone simplifies as far as it allows; with nothing at all, half the faces.
     return ("bound", 0.0) if max_error is not None else ("ratio", 0.5)
@@ -267,13 +269,34 @@ def _max_error(max_error, vertices: np.ndarray) -> float:
     return value
 
 
+def _deprecated(old: str, new: str) -> None:
+    warnings.warn(f"{old} is deprecated: use {new}", DeprecationWarning, stacklevel=3)
+
+
+def _boundary(boundary: str, simplify_boundary, keep_boundary) -> str:
+    """The boundary rule from ``boundary`` and the deprecated pair of flags."""
+    if simplify_boundary is not None or keep_boundary is not None:
+        _deprecated("simplify_boundary= / keep_boundary=", 'boundary="simplify" / "keep"')
+        if simplify_boundary and keep_boundary:
+            raise ValueError("simplify_boundary and keep_boundary exclude each other: give "
+                             'boundary="simplify" or boundary="keep"')
+        if boundary != "auto":
+            raise ValueError("give boundary= alone, not with simplify_boundary or keep_boundary")
+        boundary = "simplify" if simplify_boundary else "keep" if keep_boundary else "auto"
+    if boundary not in ("auto", "keep", "simplify"):
+        raise ValueError(f'boundary must be "auto", "keep" or "simplify", got {boundary!r}')
+    return boundary
+
+
 def simplify(mesh_vertices, mesh_faces, /, *, ratio: Optional[float] = None,
-             faces: Optional[int] = None, vertices: Optional[int] = None,
+             target_faces: Optional[int] = None, target_vertices: Optional[int] = None,
              max_error: Union[float, str, None] = None, mode: str = "surface", threads: int = 0,
-             simplify_boundary: bool = False, keep_boundary: bool = False, max_jump: float = 10.0,
+             boundary: str = "auto", max_jump: float = 10.0,
              feature_angle: float = 0.0, seams=None, locked=None,
              progress: Optional[Callable[[float], Optional[bool]]] = None,
-             split_vertices: str = "seam") -> Result:
+             split_vertices: str = "seam", faces: Optional[int] = None,
+             vertices: Optional[int] = None, simplify_boundary: Optional[bool] = None,
+             keep_boundary: Optional[bool] = None) -> Result:
     """Simplifies a triangle or polygon mesh by removing vertices; the input arrays are left
     untouched.
 
@@ -288,8 +311,11 @@ def simplify(mesh_vertices, mesh_faces, /, *, ratio: Optional[float] = None,
         ``corner_source`` then name input polygons and their corners.
     ratio : float, optional
         The share of the faces to keep, in [0, 1] (the default target: 0.5).
+    target_faces, target_vertices : int, optional
+        A count to reach instead (at most one of ratio, target_faces and target_vertices).
     faces, vertices : int, optional
-        A count to reach instead (at most one of ratio, faces and vertices).
+        Deprecated names of target_faces and target_vertices (``Result.faces`` is the output's
+        array, not a count).
     max_error : float or str, optional
         A guaranteed symmetric Hausdorff bound, in mesh units or as a string "E%" of the
         bounding-box diagonal; alone it simplifies as far as the bound allows, with a count
@@ -299,11 +325,12 @@ def simplify(mesh_vertices, mesh_faces, /, *, ratio: Optional[float] = None,
         3D, 2.5D (the XY plane) or 2D.
     threads : int
         0 = every hardware thread; the output is the same for any number.
-    simplify_boundary : bool
-        Also remove border vertices (kept by default, unless the kept border alone would take
-        more than a quarter of the faces asked for: ``report["boundary_simplified"]``).
-    keep_boundary : bool
-        Keep every border vertex whatever the target (the paper's rule).
+    boundary : {"auto", "keep", "simplify"}
+        Border vertices: "auto" keeps them unless the kept border alone would take more than
+        a quarter of the faces asked for (``report["boundary_simplified"]``); "keep" keeps
+        every one whatever the target (the paper's rule); "simplify" removes them as any other.
+    simplify_boundary, keep_boundary : bool, optional
+        Deprecated: ``boundary="simplify"`` and ``boundary="keep"`` (together, a ValueError).
     max_jump : float
         Stop short of a count target rather than take a removal costing this many times the
         dearest one so far (a part dropped, a tunnel pressed flat), half as many once the
@@ -351,7 +378,14 @@ def simplify(mesh_vertices, mesh_faces, /, *, ratio: Optional[float] = None,
         f = fanned.triangles
     else:
         v, f = _mesh_arrays(mesh_vertices, mesh_faces)
-    kind, value = _target(ratio, faces, vertices, max_error)
+    if faces is not None:
+        _deprecated("faces=", "target_faces=")
+    if vertices is not None:
+        _deprecated("vertices=", "target_vertices=")
+    kind, value = _target({"ratio": ratio, "target_faces": target_faces,
+                           "target_vertices": target_vertices, "faces": faces,
+                           "vertices": vertices}, max_error)
+    boundary = _boundary(boundary, simplify_boundary, keep_boundary)
     if seams is not None:
         seams = _array(seams, "seams", "iu").astype(np.int64, copy=False)
     if locked is not None:
@@ -360,7 +394,7 @@ def simplify(mesh_vertices, mesh_faces, /, *, ratio: Optional[float] = None,
             raise ValueError(f"locked must be a boolean mask, got dtype {locked.dtype}")
     out_faces, vertex_map, face_source, corner_source, report = _core.simplify(
         v, f, kind, value, _max_error(max_error, v), str(mode), int(threads),
-        bool(simplify_boundary), bool(keep_boundary), float(max_jump), float(feature_angle), seams,
+        boundary == "simplify", boundary == "keep", float(max_jump), float(feature_angle), seams,
         locked, progress, str(split_vertices),
         None if fanned is None else fanned.whole_flags)
     out_faces = out_faces.astype(f.dtype, copy=False)

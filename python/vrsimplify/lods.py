@@ -71,8 +71,10 @@ def lods(mesh_vertices, mesh_faces, ratios: Sequence[float], /, *, mode: str = "
         As ``vrsimplify.simplify``'s (triangles).
     ratios : sequence of float
         Shares of the input's faces in (0, 1]; 1 keeps the input as a level.
-    mode, threads, simplify_boundary, keep_boundary, max_jump, feature_angle, seams
+    mode, threads, max_jump, feature_angle, seams
         As ``vrsimplify.simplify``'s.
+    simplify_boundary, keep_boundary : bool
+        ``vrsimplify.simplify``'s ``boundary="simplify"`` and ``boundary="keep"``.
     corner_keys : array_like, (faces, 3), optional
         Integers, equal where two corners carry the same per-corner data (texture coordinates,
         normals): edges across which they differ are seams every level keeps.
