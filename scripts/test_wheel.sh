@@ -56,7 +56,7 @@ suite cp313-abi3 "$("$top/scripts/lib/cpython.sh")" "$abi3"
 # are skipped, saying so.
 root=$cache/roots/sid
 sid_suite() { # PYTHON (python3.14 | python3.15)
-  local python=$1 inside=/tmp/vrs-wheel-test venv_opts="--without-pip" pip_pins="${pins[*]} pip"
+  local python=$1 inside=/tmp/vrs-wheel-test venv_opts="--without-pip" pip_pins="${pins[*]} $(pin scipy) pip"
   local require=1 pip=""
   if [ "$python" = python3.15 ]; then # the pip CPython 3.13 bundles fails on 3.15: Debian's
     venv_opts="--without-pip --system-site-packages" require="" pip="venv/bin/python -m pip"
