@@ -219,7 +219,7 @@ def test_ctrl_c_is_prompt_during_the_set_up():
         timer.cancel()
         signal.signal(signal.SIGINT, before)
     assert sent and caught - sent[0] < 0.5, f"KeyboardInterrupt {caught - sent[0]:.3f} s after Ctrl-C"
-    assert caught - start < 2.0
+    assert caught - start < 5.0
     # The interrupted run stops by itself; the next one is whole.
     small = trimesh.creation.icosphere(subdivisions=4)
     r = vrsimplify.simplify(np.asarray(small.vertices), np.asarray(small.faces), ratio=0.5)
