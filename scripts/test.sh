@@ -13,13 +13,18 @@
 #   scripts/test.sh [--no-sanitizers]
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
+# Each stage with the time it starts: where a slow run spent its time.
+stage() { echo "== [$(date +%T)] $*"; }
+stage "set-up"
 "$top/scripts/setup.sh" --roots
+stage "the Release build"
 "$top/scripts/build.sh" -DVRS_BUILD_TESTS=ON
+stage "the Release tests"
 (cd "$top/build" && ctest --output-on-failure -j "$(nproc)")
 python_lane() {
-  echo "== the Python package: the wheel built, installed in a fresh virtual environment, tested"
+  stage "the Python package: the wheel built, installed in a fresh virtual environment, tested"
   "$top/scripts/test_wheel.sh"
-  echo "== the documentation site, built with --strict"
+  stage "the documentation site, built with --strict"
   "$top/scripts/docs.sh"
 }
 if [ "${1:-}" = "--no-sanitizers" ]; then
@@ -28,19 +33,19 @@ else
   # The wheels and the site in a lane of their own beside the sanitizer builds: pip, the venvs
   # and one pytest process at a time kept one core of two busy (20 of the 85 minutes of a run on
   # a fresh, slow machine). Its own session, so that a failure here stops all of it.
-  export -f python_lane
+  export -f python_lane stage
   export top
   setsid -w bash -c "set -euo pipefail; python_lane" >"$top/build/python-lane.log" 2>&1 &
   lane=$!
   trap 'kill -- -$lane 2>/dev/null || true' EXIT
-  echo "== the same tests under AddressSanitizer + UndefinedBehaviorSanitizer"
+  stage "the same tests under AddressSanitizer + UndefinedBehaviorSanitizer"
   cmake -S "$top" -B "$top/build/asan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVRS_SANITIZE=ON \
     -DVRS_BUILD_TESTS=ON -DVRS_BUILD_PLUGIN=OFF -DVRS_BUILD_BENCH=OFF >/dev/null
   cmake --build "$top/build/asan" -j "$(nproc)"
   # One thread against two and eight, as under ThreadSanitizer: the Release run compares three.
   (cd "$top/build/asan" && ASAN_OPTIONS=detect_leaks=1 UBSAN_OPTIONS=print_stacktrace=1 \
     VRS_TEST_THREAD_COUNTS=2,8 ctest --output-on-failure -j "$(nproc)")
-  echo "== the worker threads under ThreadSanitizer"
+  stage "the worker threads under ThreadSanitizer"
   cmake -S "$top" -B "$top/build/tsan" -DCMAKE_BUILD_TYPE=RelWithDebInfo -DVRS_TSAN=ON \
     -DVRS_BUILD_TESTS=ON -DVRS_BUILD_TOOLS=OFF -DVRS_BUILD_PLUGIN=OFF -DVRS_BUILD_BENCH=OFF >/dev/null
   cmake --build "$top/build/tsan" --target test_threads test_parts test_fan_split test_setup_threads test_bucket_queue \
@@ -64,6 +69,6 @@ else
   trap - EXIT
   cat "$top/build/python-lane.log"
   [ $status -eq 0 ] || { echo "the Python package or the documentation failed (exit $status)"; exit 1; }
-  echo "== libFuzzer on the core, ${VRS_FUZZ_SECONDS:-120} s"
+  stage "libFuzzer on the core, ${VRS_FUZZ_SECONDS:-120} s"
   VRS_FUZZ_SEED=${VRS_FUZZ_SEED:-1} "$top/scripts/fuzz.sh" "${VRS_FUZZ_SECONDS:-120}"
 fi
