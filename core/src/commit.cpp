@@ -9,6 +9,7 @@ void Simplifier::rewrite(Planned& p) {
   const Ring& ring = p.ring;
   const Patch& patch = p.patch;
   uint32_t* tris = mesh_.triangles.data();
+  if (removal_log_) log_removal(p);
   // Old faces leave their corners' lists; new faces take the first slots (the array never
   // grows: k or k-1 faces out, k-2 in), the rest are marked dead until compaction.
   for (int i = 0; i < ring.faces; ++i) {
@@ -43,6 +44,31 @@ void Simplifier::rewrite(Planned& p) {
   }
   topo_.clear(v);
   if (carried_.active()) carried_.hand_over(v, ring, patch, eval_);
+}
+
+uint32_t Simplifier::slot_label(uint32_t f) const {
+  const uint32_t old = order_.face_old[f] & ~kRewrittenSlot;
+  return kept_faces_.empty() ? old : kept_faces_[old];
+}
+
+void Simplifier::face_corners(uint32_t f, uint32_t out[3]) const {
+  std::copy_n(&corner_source_[3 * size_t(f)], 3, out);
+  if (!turned_.empty() && turned_[out[0] / 3]) std::swap(out[1], out[2]); // as write_output
+}
+
+void Simplifier::log_removal(const Planned& p) {
+  const uint32_t* tris = mesh_.triangles.data();
+  std::vector<uint32_t>& log = *removal_log_;
+  const uint32_t f0 = p.ring.f[0];
+  const int at = tris[3 * f0] == p.v ? 0 : tris[3 * f0 + 1] == p.v ? 1 : 2;
+  log.push_back(uint32_t(p.ring.faces));
+  log.push_back(corner_source_[3 * f0 + at]);
+  for (int i = 0; i < p.ring.faces; ++i) {
+    const uint32_t f = p.ring.f[i];
+    uint32_t corners[3];
+    face_corners(f, corners);
+    log.insert(log.end(), {slot_label(f), corners[0], corners[1], corners[2]});
+  }
 }
 
 } // namespace vrs

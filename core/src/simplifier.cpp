@@ -180,6 +180,10 @@ Options priced_as_input(Options options, size_t input_faces) {
 }
 
 Report simplify(Mesh& mesh, const Options& options) {
+  return simplify_recorded(mesh, options, nullptr);
+}
+
+Report simplify_recorded(Mesh& mesh, const Options& options, RemovalRecord* record) {
   Report rep;
   rep.input_vertices = mesh.vertex_count();
   rep.input_faces = mesh.face_count();
@@ -194,6 +198,7 @@ Report simplify(Mesh& mesh, const Options& options) {
 
   const auto start = std::chrono::steady_clock::now();
   Simplifier s(mesh, options, rep);
+  if (record) s.record_removals(&record->log);
   s.prepare();
   if (!s.run_parts()) {
     // cancelled while the parts ran
@@ -207,6 +212,7 @@ Report simplify(Mesh& mesh, const Options& options) {
   if (rep.stop == StopReason::NoCandidates || rep.stop == StopReason::ErrorBound)
     rep.stop_detail = s.explain_stop();
   if (rep.stop != StopReason::Cancelled) s.slide();
+  if (record) s.standing_faces(record->base_slots, record->base_corners);
   s.compact();
   rep.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   rep.parallel_seconds = s.parallel_seconds();

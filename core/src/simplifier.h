@@ -57,7 +57,11 @@ class Simplifier {
   void lock_split_seams();
   // Simplification by parts (parts.h), when the mesh is large enough: the first removals, on
   // the parts' own queues; false when cancelled.
-  bool run_parts();                              // parts.cpp
+  bool run_parts(); // parts.cpp
+  // progressive.cpp: record each removal into `log` (one thread: the order is the writes');
+  // after the run, the faces standing: their slots and corners (the base of the record).
+  void record_removals(std::vector<uint32_t>* log) { removal_log_ = log; }
+  void standing_faces(std::vector<uint32_t>& slots, std::vector<uint32_t>& corners) const;
   template <class Queue> void run(Queue& queue); // simplifier.cpp
   void compact();                                // output.cpp
   void slide();                                  // slide.cpp
@@ -171,6 +175,13 @@ class Simplifier {
   void touch_ring(const Planned& p, Queue& q, std::vector<uint32_t>& reprice,
                   const uint8_t* frozen);
   void rewrite(Planned& p);
+  // --- commit.cpp: the removals' record for a progressive mesh (progressive.h), in the order
+  // they are written. Each: the fan's face count, the removed vertex's input corner, then per
+  // fan face its slot (input face) and its three input corners, as the output orients them.
+  std::vector<uint32_t>* removal_log_ = nullptr;
+  void log_removal(const Planned& p);
+  uint32_t slot_label(uint32_t f) const;
+  void face_corners(uint32_t f, uint32_t out[3]) const;
   // Prices the vertices on `reprice_` (on the workers) and queues them again.
   template <class Queue> void reprice(Queue& queue);
 
@@ -285,5 +296,12 @@ class Simplifier {
   size_t faces0_ = 0;
   double reference_area_ = 1; // mean input triangle area (LocalError's weight)
 };
+
+// simplify() with its removals recorded for a progressive mesh (progressive.cpp): the log
+// (Simplifier::removal_log_) and the faces standing after the run. Null: a plain run.
+struct RemovalRecord {
+  std::vector<uint32_t> log, base_slots, base_corners;
+};
+Report simplify_recorded(Mesh& mesh, const Options& options, RemovalRecord* record);
 
 } // namespace vrs
