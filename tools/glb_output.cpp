@@ -14,6 +14,7 @@
 #include "vcg_mesh.h"
 #include "vrs/glb.h"
 #include "vrs/lods.h"
+#include "vrs/progressive.h"
 #include <wrap/io_trimesh/io_mask.h>
 
 namespace vrs_tool {
@@ -151,6 +152,61 @@ const float* or_null(const std::vector<float>& v) {
   return v.empty() ? nullptr : v.data();
 }
 
+using Clock = std::chrono::steady_clock;
+
+// --progressive: the base and the records, one .glb.
+int run_progressive(const GlbRequest& r, const vrs::Mesh& mesh, const Arrays& a,
+                    const vrs::GlbAttributes& g, Clock::time_point t0) {
+  vrs::Options o = r.options;
+  o.target = vrs::Target{};
+  o.target.kind = vrs::TargetKind::Ratio;
+  o.target.ratio = r.ratios.at(0);
+  const auto t1 = Clock::now();
+  const vrs::ProgressiveMesh p =
+      vrs::simplify_progressive(mesh, o, a.corner_keys.empty() ? nullptr : &a.corner_keys);
+  const double seconds = std::chrono::duration<double>(Clock::now() - t1).count();
+  if (!p.ok) {
+    std::fprintf(stderr, "vrsimplify: %s\n", p.message.c_str());
+    return 1;
+  }
+  vrs::ProgressiveLayout layout;
+  const std::string err = vrs::write_progressive_glb(
+      r.output, mesh.positions.data(), mesh.vertex_count(), mesh.triangles, p, g, &layout);
+  if (!err.empty()) {
+    std::fprintf(stderr, "vrsimplify: %s\n", err.c_str());
+    return err.rfind("cannot write", 0) == 0 ? 3 : 1;
+  }
+  const double total = std::chrono::duration<double>(Clock::now() - t0).count();
+  const vrs::Report& rep = p.report;
+  if (r.json) {
+    std::printf("{\"input_vertices\":%zu,\"input_faces\":%zu,\"file_bytes\":%zu,"
+                "\"base_bytes\":%zu,\"base_faces\":%zu,\"base_vertices\":%zu,"
+                "\"gltf_vertices\":%zu,\"faces\":%zu,\"insertions\":%zu,"
+                "\"record_topology_bytes\":%zu,\"target_reached\":%s,\"stop_reason\":\"%s\","
+                "\"seconds_simplify\":%.6f,\"seconds_total\":%.6f}\n",
+                mesh.vertex_count(), mesh.face_count(), layout.file_bytes, layout.base_bytes,
+                layout.base_faces, layout.base_vertices, layout.vertex_count, layout.faces,
+                layout.insertions, layout.record_topology_bytes,
+                rep.target_reached ? "true" : "false", vrs::stop_reason_name(rep.stop), seconds,
+                total);
+    return 0;
+  }
+  std::printf("input:   %zu vertices, %zu faces\n", mesh.vertex_count(), mesh.face_count());
+  std::printf("output:  %s, %zu bytes, %zu glTF vertices (split at seams), %zu faces\n",
+              r.output.c_str(), layout.file_bytes, layout.vertex_count, layout.faces);
+  std::printf("base:    %zu faces, %zu vertices, drawn from %zu bytes (%.1f %%)%s%s\n",
+              layout.base_faces, layout.base_vertices, layout.base_bytes,
+              100.0 * double(layout.base_bytes) / double(layout.file_bytes),
+              rep.target_reached ? "" : ", stopped short: ",
+              rep.target_reached ? "" : rep.stop_detail.c_str());
+  std::printf("records: %zu insertions, %zu bytes (%zu of them faces, %.1f a vertex)\n",
+              layout.insertions, layout.stream_bytes, layout.record_topology_bytes,
+              layout.insertions ? double(layout.record_topology_bytes) / double(layout.insertions)
+                                : 0.0);
+  std::printf("time:    %.3f s simplify, %.3f s total\n", seconds, total);
+  return 0;
+}
+
 } // namespace
 
 int run_glb(const GlbRequest& r) {
@@ -171,16 +227,6 @@ int run_glb(const GlbRequest& r) {
   const Arrays a = arrays_of(*loaded.doc);
   close(loaded.doc);
 
-  vrs::Options o = r.options;
-  if (r.error_bound && !(o.max_error > 0)) o.max_error = HUGE_VAL;
-  const auto t1 = clock::now();
-  const vrs::LodChain chain =
-      vrs::simplify_lods(mesh, r.ratios, o, a.corner_keys.empty() ? nullptr : &a.corner_keys);
-  const double seconds = std::chrono::duration<double>(clock::now() - t1).count();
-  if (!chain.ok) {
-    std::fprintf(stderr, "vrsimplify: %s\n", chain.message.c_str());
-    return 1;
-  }
   vrs::GlbAttributes g;
   g.normals = or_null(a.normals);
   g.colors = or_null(a.colors);
@@ -191,6 +237,18 @@ int run_glb(const GlbRequest& r) {
   g.texture_uri = uri;
   g.generator = std::string("vrsimplify ") + VRS_VERSION;
   g.compress = r.compress;
+  if (r.progressive) return run_progressive(r, mesh, a, g, t0);
+
+  vrs::Options o = r.options;
+  if (r.error_bound && !(o.max_error > 0)) o.max_error = HUGE_VAL;
+  const auto t1 = clock::now();
+  const vrs::LodChain chain =
+      vrs::simplify_lods(mesh, r.ratios, o, a.corner_keys.empty() ? nullptr : &a.corner_keys);
+  const double seconds = std::chrono::duration<double>(clock::now() - t1).count();
+  if (!chain.ok) {
+    std::fprintf(stderr, "vrsimplify: %s\n", chain.message.c_str());
+    return 1;
+  }
   // Each level's bound is against the finer level: against the input they add up.
   std::vector<double> bounds;
   double sum = 0;

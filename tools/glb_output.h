@@ -15,6 +15,7 @@ struct GlbRequest {
   vrs::Options options;       // its target is ignored
   bool error_bound = false;   // record each level's certified bound (in the mesh's extras)
   bool compress = false;      // EXT_meshopt_compression
+  bool progressive = false;   // one level (ratios[0], the base) and its insertion records
   bool json = false;
 };
 

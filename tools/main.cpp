@@ -87,6 +87,11 @@ const char* kUsage =
     "                                  sharing one vertex buffer, coarsest level first, bound\n"
     "                                  by MSFT_lod; N: N levels halving from 1 (the input).\n"
     "                                  Without --lods a .glb holds the --ratio level alone\n"
+    "  --progressive [--base R]        a progressive mesh: the base (R of the faces, default\n"
+    "                                  0.01) drawn by any glTF reader, then one record a\n"
+    "                                  removed vertex, coarsest first, that puts it back\n"
+    "                                  (VRS_mesh_progressive, docs/progressive.md): all of\n"
+    "                                  them give the input exactly\n"
     "  --compress                      EXT_meshopt_compression (meshoptimizer's codec,\n"
     "                                  lossless: positions stay the input's floats); the\n"
     "                                  levels still stream coarsest first\n"
@@ -236,7 +241,10 @@ int main(int argc, char** argv) {
   vrs_tool::TiledRequest tiled; // --memory / --scheduler
   std::vector<double> lods;     // --lods: levels of detail into one .glb
   bool compress = false;        // --compress: the .glb with EXT_meshopt_compression
-  std::string not_tiled;        // the first option a tiled run would not honour
+  bool progressive = false;     // --progressive: a base mesh and one record a vertex, one .glb
+  double base = 0.01;           // --base: the progressive base's share of the faces
+  bool base_given = false;
+  std::string not_tiled; // the first option a tiled run would not honour
   for (int i = 1; i < argc; ++i) {
     std::string a = argv[i];
     // --opt=value: the value is what follows the '=', and only an option that takes one may
@@ -307,6 +315,12 @@ int main(int argc, char** argv) {
       if (e.empty() || !parse_double(e.c_str(), max_error) || !(max_error > 0))
         return usage_error("--max-error needs a distance > 0, in mesh units or with % (of the "
                            "bounding-box diagonal)");
+    } else if (a == "--progressive") {
+      progressive = true;
+    } else if (a == "--base") {
+      if (!(v = value()) || !parse_double(v, base) || !(base > 0 && base <= 1))
+        return usage_error("--base needs the base mesh's share of the faces, in (0, 1]");
+      base_given = true;
     } else if (a == "--lods") {
       if (!(v = value()) || !vrs_tool::parse_lods(v, lods))
         return usage_error("--lods needs ratios in (0, 1] (0.5,0.1,0.01) or a count of levels "
@@ -420,6 +434,15 @@ int main(int argc, char** argv) {
                        ": the output must end in .ply, .off, .obj, .stl or .glb");
   if (!lods.empty() && !is_glb(out))
     return usage_error("--lods writes one .glb with every level: OUTPUT must end in .glb");
+  if (progressive && !is_glb(out))
+    return usage_error("--progressive writes a .glb: OUTPUT must end in .glb");
+  if (base_given && !progressive) return usage_error("--base applies with --progressive");
+  if (progressive && targets)
+    return usage_error("--progressive takes the base's size as --base R, not --ratio or other "
+                       "targets");
+  if (progressive && (!lods.empty() || compress || error_bound))
+    return usage_error("--progressive takes no --lods, --compress nor --error-bound: its "
+                       "records refine the base vertex by vertex");
   if (compress && !is_glb(out))
     return usage_error("--compress applies to a .glb output (EXT_meshopt_compression)");
   if (is_glb(out)) {
@@ -434,6 +457,8 @@ int main(int argc, char** argv) {
     vrs_tool::GlbRequest g;
     g.input = in, g.output = out, g.options = opt, g.json = json, g.error_bound = error_bound;
     g.compress = compress;
+    g.progressive = progressive;
+    if (progressive) opt.target.ratio = base;
     g.ratios = lods.empty() ? std::vector<double>{opt.target.ratio} : lods;
     if (lods.empty() && !(opt.target.ratio > 0 && opt.target.ratio <= 1))
       return usage_error("--ratio for a .glb must be in (0, 1]");

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 #include <string>
 #include <vector>
 
@@ -23,8 +24,16 @@ class GlbJson {
   int view(size_t offset, size_t bytes, size_t stride, int target) {
     std::string v = "{\"buffer\":0,\"byteOffset\":" + num(offset) + ",\"byteLength\":" + num(bytes);
     if (stride) v += ",\"byteStride\":" + num(stride);
-    views_.push_back(v + ",\"target\":" + num(size_t(target)) + "}");
+    if (target) v += ",\"target\":" + num(size_t(target));
+    views_.push_back(v + "}");
     return int(views_.size() - 1);
+  }
+
+  // An extension object on the next level's primitive, declared in extensionsUsed (not
+  // required: a reader without it draws the level alone).
+  void primitive_extension(const std::string& name, const std::string& object) {
+    extension_name_ = name;
+    extension_ = object;
   }
 
   // A view decoded by EXT_meshopt_compression into the fallback buffer (buffer 1, no bytes) at
@@ -73,9 +82,15 @@ class GlbJson {
     if (error >= 0 && std::isfinite(error)) extras += ",\"error\":" + real(error);
     if (stream_bytes) extras += ",\"streamBytes\":" + num(stream_bytes);
     extras += "}}";
+    std::string extension;
+    if (!extension_.empty()) {
+      extension = ",\"extensions\":{\"" + extension_name_ + "\":" + extension_ + "}";
+      used_.push_back(extension_name_);
+      extension_.clear();
+    }
     meshes_.push_back("{\"name\":\"level " + num(k) + "\",\"primitives\":[{\"attributes\":{" +
-                      attributes + "},\"indices\":" + idx + ",\"material\":0,\"mode\":4}]," +
-                      "\"extras\":" + extras + "}");
+                      attributes + "},\"indices\":" + idx + ",\"material\":0,\"mode\":4" +
+                      extension + "}]," + "\"extras\":" + extras + "}");
     ratios_.push_back(ratio);
   }
 
@@ -86,6 +101,8 @@ class GlbJson {
     std::string used;
     if (n > 1) used += "\"MSFT_lod\"";
     if (compressed_) used += std::string(used.empty() ? "" : ",") + "\"EXT_meshopt_compression\"";
+    for (const std::string& name : used_)
+      used += std::string(used.empty() ? "" : ",") + "\"" + name + "\"";
     if (!used.empty()) s += ",\"extensionsUsed\":[" + used + "]";
     if (compressed_) s += ",\"extensionsRequired\":[\"EXT_meshopt_compression\"]";
     s += ",\"scene\":0,\"scenes\":[{\"nodes\":[0]}],\"nodes\":[";
@@ -187,6 +204,8 @@ class GlbJson {
   size_t buffer_bytes_ = 0, fallback_bytes_ = 0;
   bool compressed_ = false;
   std::vector<std::string> views_, accessors_, meshes_;
+  std::string extension_name_, extension_; // for the next level's primitive
+  std::vector<std::string> used_;          // extensions the primitives use
   std::vector<double> ratios_;
 };
 

@@ -17,6 +17,7 @@
 #include <vector>
 
 #include "vrs/lods.h"
+#include "vrs/progressive.h"
 
 namespace vrs {
 
@@ -65,5 +66,32 @@ struct GlbLayout {
 std::string write_glb(const std::string& path, const float* positions, size_t vertex_count,
                       const LodChain& chain, const GlbAttributes& attributes,
                       GlbLayout* layout = nullptr);
+
+// A progressive mesh (vrs/progressive.h) as one .glb (docs/progressive.md specifies it): the
+// default scene draws the base mesh, which any glTF reader shows; the primitive's
+// VRS_mesh_progressive extension names a buffer view of insertion records, coarsest first,
+// each holding the glTF vertices it adds and the faces it writes. The binary chunk: the
+// base's indices, its vertices, then the records, so that every prefix of the file draws the
+// base and the records it holds whole.
+struct ProgressiveLayout {
+  size_t file_bytes = 0;
+  size_t base_bytes = 0; // the file's bytes up to the base mesh's last vertex
+  size_t base_vertices = 0, base_faces = 0;
+  size_t vertex_count = 0, faces = 0; // after every insertion
+  size_t insertions = 0;
+  size_t vertex_stride = 0;
+  size_t stream_offset = 0, stream_bytes = 0; // the records, in the file
+  // Bytes of the records beyond the vertices they carry (what the faces cost).
+  size_t record_topology_bytes = 0;
+};
+
+// Writes `p`, made from the mesh with `positions` (3 floats an input vertex) and
+// `input_triangles` (the input's faces, which the record's corners name), to `path`, whole or
+// not at all. Per-corner attributes need no more than the corners the record holds.
+// `attributes.compress` is not supported here. Empty string on success, else the error.
+std::string write_progressive_glb(const std::string& path, const float* positions,
+                                  size_t vertex_count, const std::vector<uint32_t>& input_triangles,
+                                  const ProgressiveMesh& p, const GlbAttributes& attributes,
+                                  ProgressiveLayout* layout = nullptr);
 
 } // namespace vrs
