@@ -194,8 +194,9 @@ nb::tuple simplify(AnyArray vertices, AnyArray faces, const std::string& target_
 
 } // namespace
 
-void register_tiled(nb::module_& m); // tiled_module.cpp
-void register_lods(nb::module_& m);  // lods_module.cpp
+void register_tiled(nb::module_& m);       // tiled_module.cpp
+void register_lods(nb::module_& m);        // lods_module.cpp
+void register_progressive(nb::module_& m); // progressive_module.cpp
 
 NB_MODULE(_core, m) {
   m.doc() = "vrsimplify's C++ core (use vrsimplify.simplify)";
@@ -221,6 +222,7 @@ NB_MODULE(_core, m) {
   });
   register_tiled(m);
   register_lods(m);
+  register_progressive(m);
   m.def("bounding_box_diagonal", [](AnyArray vertices) {
     vrs::Mesh mesh;
     mesh.positions = read_positions(vertices);

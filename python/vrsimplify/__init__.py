@@ -24,7 +24,8 @@ __version__: str = _core.__version__
 # finalizes.
 atexit.register(_core.wait_abandoned_runs)
 __all__ = ["simplify", "Result", "Report", "TargetNotReachedWarning", "bounding_box_diagonal",
-           "lods", "Lods", "LodLevel", "write_glb"]
+           "lods", "Lods", "LodLevel", "write_glb", "progressive", "Progressive",
+           "read_progressive"]
 
 # Imported on first use (``vrsimplify.trimesh``): each needs a package the core does not.
 _SUBMODULES = ("trimesh", "pymeshlab", "tiled", "serve")
@@ -416,3 +417,4 @@ def bounding_box_diagonal(vertices) -> float:
 
 
 from .lods import LodLevel, Lods, lods, write_glb  # noqa: E402  (needs _array above)
+from .progressive import Progressive, progressive, read_progressive  # noqa: E402

@@ -1,0 +1,350 @@
+// A progressive .glb (docs/progressive.md) in the browser: the base mesh, then one insertion
+// record a vertex, applied as the bytes arrive. ProgressiveDecoder keeps the vertex bytes and
+// the indices in arrays sized for the whole mesh and says which ranges each step changed (no
+// three.js here); streamProgressive reads a URL with a streamed fetch; VRSProgressivePlugin
+// does the same for three.js's GLTFLoader when it loaded the whole file.
+
+export const EXTENSION = "VRS_mesh_progressive";
+const CLOSED_FAN = 1, OPEN_FAN = 2, LISTED_RING = 3;
+
+// The JSON chunk and where the binary chunk starts, once the first bytes are in (null before).
+export function readHeader(bytes) {
+  if (bytes.length < 20) return null;
+  const view = new DataView(bytes.buffer, bytes.byteOffset, bytes.byteLength);
+  if (view.getUint32(0, true) !== 0x46546c67) throw new Error("not a binary glTF file");
+  const jsonLength = view.getUint32(12, true);
+  if (bytes.length < 20 + jsonLength + 8) return null;
+  const json = JSON.parse(new TextDecoder().decode(bytes.subarray(20, 20 + jsonLength)));
+  return { json, binStart: 20 + jsonLength + 8 };
+}
+
+// The progressive primitive's layout: its base's vertex and index ranges in the binary chunk,
+// the stride, the attributes, the records' view and the whole mesh's counts.
+export function describeProgressive(json) {
+  const prim = json.meshes?.[0]?.primitives?.[0];
+  const ext = prim?.extensions?.[EXTENSION];
+  if (!ext) return null;
+  const position = json.accessors[prim.attributes.POSITION];
+  const vertexView = json.bufferViews[position.bufferView];
+  const index = json.accessors[prim.indices];
+  const indexView = json.bufferViews[index.bufferView];
+  const recordView = json.bufferViews[ext.bufferView];
+  return {
+    stride: vertexView.byteStride,
+    baseVertices: position.count,
+    baseIndices: index.count,
+    vertexStart: vertexView.byteOffset ?? 0,
+    indexStart: (indexView.byteOffset ?? 0) + (index.byteOffset ?? 0),
+    indexType: index.componentType,
+    recordStart: recordView.byteOffset ?? 0,
+    recordBytes: recordView.byteLength,
+    insertions: ext.insertions,
+    vertexCount: ext.vertexCount,
+    faceCount: ext.faceCount,
+    min: position.min,
+    max: position.max,
+    attributes: Object.fromEntries(Object.entries(prim.attributes).map(([k, a]) => {
+      const acc = json.accessors[a];
+      return [k, { offset: acc.byteOffset ?? 0, type: acc.type, componentType: acc.componentType,
+                   normalized: !!acc.normalized }];
+    })),
+    image: json.images?.[0]?.uri,
+  };
+}
+
+export class ProgressiveDecoder {
+  // `binary`: the binary chunk's bytes so far (at least the base's).
+  constructor(layout, binary) {
+    this.layout = layout;
+    const { stride, baseVertices, baseIndices } = layout;
+    this.vertices = new Uint8Array(layout.vertexCount * stride);
+    this.vertices.set(binary.subarray(layout.vertexStart, layout.vertexStart + baseVertices * stride));
+    this.indices = new Uint32Array(layout.faceCount * 3);
+    const wide = layout.indexType === 5125;
+    const src = binary.slice(layout.indexStart, layout.indexStart + baseIndices * (wide ? 4 : 2)).buffer;
+    this.indices.set(wide ? new Uint32Array(src) : new Uint16Array(src));
+    this.vertexCount = baseVertices;
+    this.faceCount = baseIndices / 3;
+    this.applied = 0;
+    this.records = new Uint8Array(layout.recordBytes);
+    this.received = 0; // record bytes in
+    this.at = 0; // the next record's offset
+    this.resetChanges();
+  }
+
+  // Bytes of the records' view, in order.
+  push(chunk) {
+    const n = Math.min(chunk.length, this.records.length - this.received);
+    this.records.set(chunk.subarray(0, n), this.received);
+    this.received += n;
+  }
+
+  get complete() {
+    return this.applied >= this.layout.insertions;
+  }
+
+  // What changed since the last resetChanges(): vertices [vertexFrom, vertexCount), indices
+  // [indexLow, indexHigh).
+  resetChanges() {
+    this.vertexFrom = this.vertexCount;
+    this.indexLow = Infinity;
+    this.indexHigh = 0;
+  }
+
+  // Applies whole records until `deadline` (performance.now()) or the bytes run out; returns
+  // how many.
+  apply(deadline = Infinity) {
+    let count = 0;
+    while (!this.complete) {
+      if ((count & 63) === 0 && performance.now() > deadline) break;
+      const next = this.applyOne(this.at);
+      if (next < 0) break;
+      this.at = next;
+      this.applied++;
+      count++;
+    }
+    return count;
+  }
+
+  // One record at `at`: the offset after it, or -1 when its bytes are not all in. Scratch
+  // arrays, no allocation: a record is a few dozen bytes and there are millions.
+  applyOne(at) {
+    const r = this.records, end = this.received, stride = this.layout.stride;
+    const s = this.scratch ?? (this.scratch = {
+      slots: new Int32Array(256), patch: new Int32Array(768), ring: new Int32Array(260),
+      faces: new Int32Array(768) });
+    let p = at;
+    const varint = () => {
+      let value = 0, scale = 1;
+      for (;;) {
+        if (p >= end) return -1;
+        const b = r[p++];
+        value += (b & 0x7f) * scale;
+        if (b < 0x80) return value;
+        scale *= 128;
+      }
+    };
+    const head = varint();
+    if (head < 0) return -1;
+    const k = Math.floor(head / 8), shape = (head >> 1) & 3;
+    let added = 1, apexRef = 0;
+    if (head & 1) {
+      if ((added = varint()) < 0) return -1;
+      if (shape && (apexRef = varint()) < 0) return -1;
+    }
+    if (k > 256) throw new Error(`a record of ${k} faces: not a progressive stream this reads`);
+    const vertexAt = p;
+    p += added * stride;
+    if (p > end) return -1;
+    const reused = shape === CLOSED_FAN ? k - 2 : shape === OPEN_FAN ? k - 1 : varint();
+    if (reused < 0) return -1;
+    const F = this.faceCount, V = this.vertexCount, idx = this.indices;
+    const { slots, patch, ring, faces } = s;
+    for (let i = 0; i < reused; i++) {
+      const back = varint();
+      if (back < 0) return -1;
+      slots[i] = F - 1 - back;
+      patch[3 * i] = idx[3 * slots[i]];
+      patch[3 * i + 1] = idx[3 * slots[i] + 1];
+      patch[3 * i + 2] = idx[3 * slots[i] + 2];
+    }
+    const corners = 3 * reused;
+    const vertex = (ref) => ref < added ? V + ref
+      : ref < added + corners ? patch[ref - added]
+      : V - 1 - (ref - added - corners);
+    if (shape === CLOSED_FAN || shape === OPEN_FAN) {
+      const start = varint();
+      if (start < 0) return -1;
+      const apex = vertex(apexRef);
+      const length = shape === CLOSED_FAN ? k : k + 1;
+      ring[0] = vertex(start);
+      // The patch's outline: from each vertex, the side the patch walks and never back.
+      for (let n = 1; n < length; n++) {
+        const a = ring[n - 1];
+        let b = -1;
+        for (let t = 0; t < corners && b < 0; t++) {
+          if (patch[t] !== a) continue;
+          const c = patch[t - (t % 3) + ((t % 3) + 1) % 3];
+          let back = false;
+          for (let u = 0; u < corners && !back; u++)
+            back = patch[u] === c && patch[u - (u % 3) + ((u % 3) + 1) % 3] === a;
+          if (!back) b = c;
+        }
+        ring[n] = b;
+      }
+      for (let i = 0; i < k; i++) {
+        faces[3 * i] = apex;
+        faces[3 * i + 1] = ring[i];
+        faces[3 * i + 2] = ring[(i + 1) % length];
+      }
+    } else if (shape === LISTED_RING) {
+      const open = varint();
+      if (open < 0) return -1;
+      const apex = vertex(apexRef);
+      const length = k + open;
+      for (let i = 0; i < length; i++) {
+        const ref = varint();
+        if (ref < 0) return -1;
+        ring[i] = vertex(ref);
+      }
+      for (let i = 0; i < k; i++) {
+        faces[3 * i] = apex;
+        faces[3 * i + 1] = ring[i];
+        faces[3 * i + 2] = ring[(i + 1) % length];
+      }
+    } else {
+      for (let i = 0; i < 3 * k; i++) {
+        const ref = varint();
+        if (ref < 0) return -1;
+        faces[i] = vertex(ref);
+      }
+    }
+    // Whole: write it.
+    const vs = this.vertices, bytes = added * stride, to = V * stride;
+    for (let i = 0; i < bytes; i++) vs[to + i] = r[vertexAt + i];
+    this.vertexCount += added;
+    for (let i = 0; i < k; i++) {
+      const slot = i < reused ? slots[i] : this.faceCount++;
+      idx[3 * slot] = faces[3 * i];
+      idx[3 * slot + 1] = faces[3 * i + 1];
+      idx[3 * slot + 2] = faces[3 * i + 2];
+      if (3 * slot < this.indexLow) this.indexLow = 3 * slot;
+      if (3 * slot + 3 > this.indexHigh) this.indexHigh = 3 * slot + 3;
+    }
+    return p;
+  }
+}
+
+// Reads `url` with one streamed GET (a throttled server sends it as it can): calls
+// onBase(decoder) once the base's bytes are in, then onBytes(received, total) as more arrive;
+// the records are pushed into the decoder, which the caller applies (per frame, say).
+export async function streamProgressive(url, { onBase, onBytes = () => {} }) {
+  const response = await fetch(url);
+  if (!response.ok) throw new Error(`${url}: HTTP ${response.status}`);
+  const reader = response.body.getReader();
+  const total = Number(response.headers.get("Content-Length")) || 0;
+  let buffer = new Uint8Array(Math.max(total, 1 << 16)), length = 0;
+  let header = null, layout = null, decoder = null, fed = 0;
+  for (;;) {
+    const { done, value } = await reader.read();
+    if (done) break;
+    if (length + value.length > buffer.length) {
+      const grown = new Uint8Array(Math.max(2 * buffer.length, length + value.length));
+      grown.set(buffer.subarray(0, length));
+      buffer = grown;
+    }
+    buffer.set(value, length);
+    length += value.length;
+    onBytes(length, total);
+    if (!header && (header = readHeader(buffer.subarray(0, length)))) {
+      layout = describeProgressive(header.json);
+      if (!layout) throw new Error(`${url}: no ${EXTENSION} extension`);
+    }
+    if (!layout) continue;
+    const bin = header.binStart;
+    if (!decoder && length >= bin + layout.recordStart) {
+      decoder = new ProgressiveDecoder(layout, buffer.subarray(bin, length));
+      fed = bin + layout.recordStart;
+      onBase(decoder, layout, header.json);
+    }
+    if (decoder && length > fed) {
+      decoder.push(buffer.subarray(fed, length));
+      fed = length;
+    }
+  }
+  if (!decoder) throw new Error(`${url}: the file ends before its base mesh`);
+  return decoder;
+}
+
+// three.js's GLTFLoader, given the whole file: the primitive's geometry grows into the whole
+// mesh, `budgetMs` of records a call to gltf.userData.progressive.refine() (once a frame).
+// Usage: loader.register((parser) => new VRSProgressivePlugin(parser, THREE)).
+export class VRSProgressivePlugin {
+  constructor(parser, THREE) {
+    this.parser = parser;
+    this.THREE = THREE;
+    this.name = EXTENSION;
+  }
+
+  async afterRoot(gltf) {
+    const json = this.parser.json;
+    const layout = describeProgressive(json);
+    if (!layout) return;
+    const prim = json.meshes[0].primitives[0];
+    const view = (i) => this.parser.getDependency("bufferView", i).then((b) => new Uint8Array(b));
+    const indexAccessor = json.accessors[prim.indices];
+    const [records, vertexBytes, indexBytes] = await Promise.all([
+      view(prim.extensions[EXTENSION].bufferView),
+      view(json.accessors[prim.attributes.POSITION].bufferView),
+      view(indexAccessor.bufferView),
+    ]);
+    // The decoder reads the base from one binary chunk: the index view, then the vertex view.
+    const binary = new Uint8Array(indexBytes.length + vertexBytes.length);
+    binary.set(indexBytes, 0);
+    binary.set(vertexBytes, indexBytes.length);
+    const local = { ...layout, indexStart: indexAccessor.byteOffset ?? 0, vertexStart: indexBytes.length };
+    const decoder = new ProgressiveDecoder(local, binary);
+    decoder.push(records);
+    let mesh = null;
+    gltf.scene.traverse((o) => { if (!mesh && o.isMesh) mesh = o; });
+    const geometry = growingGeometry(this.THREE, decoder, layout);
+    if (mesh) {
+      mesh.geometry.dispose();
+      mesh.geometry = geometry;
+    }
+    gltf.userData.progressive = {
+      decoder,
+      refine: (budgetMs = 8) => refine(decoder, geometry, performance.now() + budgetMs),
+    };
+  }
+}
+
+// A BufferGeometry over the decoder's arrays (sized for the whole mesh), drawn up to its faces.
+export function growingGeometry(THREE, decoder, layout) {
+  const g = new THREE.BufferGeometry();
+  const v = decoder.vertices;
+  const floats = new THREE.InterleavedBuffer(new Float32Array(v.buffer, v.byteOffset, v.byteLength / 4), layout.stride / 4);
+  const bytes = new THREE.InterleavedBuffer(v, layout.stride);
+  floats.setUsage(THREE.DynamicDrawUsage);
+  bytes.setUsage(THREE.DynamicDrawUsage);
+  const names = { POSITION: "position", NORMAL: "normal", TEXCOORD_0: "uv", COLOR_0: "color" };
+  for (const [k, a] of Object.entries(layout.attributes)) {
+    const size = { VEC2: 2, VEC3: 3, VEC4: 4 }[a.type];
+    if (a.componentType === 5126)
+      g.setAttribute(names[k], new THREE.InterleavedBufferAttribute(floats, size, a.offset / 4));
+    else g.setAttribute(names[k], new THREE.InterleavedBufferAttribute(bytes, size, a.offset, true));
+  }
+  const index = new THREE.BufferAttribute(decoder.indices, 1);
+  index.setUsage(THREE.DynamicDrawUsage);
+  g.setIndex(index);
+  g.setDrawRange(0, decoder.faceCount * 3);
+  g.boundingBox = new THREE.Box3(new THREE.Vector3(...layout.min), new THREE.Vector3(...layout.max));
+  g.boundingSphere = g.boundingBox.getBoundingSphere(new THREE.Sphere());
+  g.userData.floats = floats;
+  g.userData.bytes = bytes;
+  return g;
+}
+
+// Applies records until `deadline` and hands the changed ranges to the GPU; returns how many.
+export function refine(decoder, geometry, deadline) {
+  decoder.resetChanges();
+  const n = decoder.apply(deadline);
+  if (!n) return 0;
+  const stride = decoder.layout.stride;
+  const { floats, bytes } = geometry.userData;
+  const from = decoder.vertexFrom, to = decoder.vertexCount;
+  if (to > from) {
+    floats.clearUpdateRanges();
+    floats.addUpdateRange((from * stride) / 4, ((to - from) * stride) / 4);
+    floats.needsUpdate = true;
+    bytes.clearUpdateRanges();
+    bytes.addUpdateRange(from * stride, (to - from) * stride);
+    bytes.needsUpdate = true;
+  }
+  const index = geometry.index;
+  index.clearUpdateRanges();
+  index.addUpdateRange(decoder.indexLow, decoder.indexHigh - decoder.indexLow);
+  index.needsUpdate = true;
+  geometry.setDrawRange(0, decoder.faceCount * 3);
+  return n;
+}
