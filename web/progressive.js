@@ -69,6 +69,10 @@ export class ProgressiveDecoder {
     this.records = new Uint8Array(layout.recordBytes);
     this.received = 0; // record bytes in
     this.at = 0; // the next record's offset
+    this.p = 0; // the reading position within a record (applyOne)
+    this.added = 0; // the record's new vertices and patch corners (vertex())
+    this.corners = 0;
+    this.scratch = null;
     this.resetChanges();
   }
 
@@ -91,11 +95,11 @@ export class ProgressiveDecoder {
     this.indexHigh = 0;
   }
 
-  // Applies whole records until `deadline` (performance.now()) or the bytes run out; returns
-  // how many.
-  apply(deadline = Infinity) {
+  // Applies whole records until `deadline` (performance.now()), `most` of them, or the bytes
+  // run out; returns how many.
+  apply(deadline = Infinity, most = Infinity) {
     let count = 0;
-    while (!this.complete) {
+    while (!this.complete && count < most) {
       if ((count & 63) === 0 && performance.now() > deadline) break;
       const next = this.applyOne(this.at);
       if (next < 0) break;
@@ -106,102 +110,116 @@ export class ProgressiveDecoder {
     return count;
   }
 
+  // A varint at this.p (-1: its bytes are not all in).
+  varint() {
+    const r = this.records, end = this.received;
+    let value = 0, scale = 1;
+    for (;;) {
+      if (this.p >= end) return -1;
+      const b = r[this.p++];
+      value += (b & 0x7f) * scale;
+      if (b < 0x80) return value;
+      scale *= 128;
+    }
+  }
+
+  // The vertex reference `ref` names (docs/progressive.md).
+  vertex(ref) {
+    const added = this.added, corners = this.corners, V = this.vertexCount;
+    return ref < added ? V + ref
+      : ref < added + corners ? this.scratch.patch[ref - added]
+      : V - 1 - (ref - added - corners);
+  }
+
   // One record at `at`: the offset after it, or -1 when its bytes are not all in. Scratch
   // arrays, no allocation: a record is a few dozen bytes and there are millions.
   applyOne(at) {
-    const r = this.records, end = this.received, stride = this.layout.stride;
+    const r = this.records, stride = this.layout.stride;
     const s = this.scratch ?? (this.scratch = {
       slots: new Int32Array(256), patch: new Int32Array(768), ring: new Int32Array(260),
-      faces: new Int32Array(768) });
-    let p = at;
-    const varint = () => {
-      let value = 0, scale = 1;
-      for (;;) {
-        if (p >= end) return -1;
-        const b = r[p++];
-        value += (b & 0x7f) * scale;
-        if (b < 0x80) return value;
-        scale *= 128;
-      }
-    };
-    const head = varint();
+      faces: new Int32Array(768), from: new Int32Array(768), to: new Int32Array(768) });
+    this.p = at;
+    const head = this.varint();
     if (head < 0) return -1;
     const k = Math.floor(head / 8), shape = (head >> 1) & 3;
     let added = 1, apexRef = 0;
     if (head & 1) {
-      if ((added = varint()) < 0) return -1;
-      if (shape && (apexRef = varint()) < 0) return -1;
+      if ((added = this.varint()) < 0) return -1;
+      if (shape && (apexRef = this.varint()) < 0) return -1;
     }
     if (k > 256) throw new Error(`a record of ${k} faces: not a progressive stream this reads`);
-    const vertexAt = p;
-    p += added * stride;
-    if (p > end) return -1;
-    const reused = shape === CLOSED_FAN ? k - 2 : shape === OPEN_FAN ? k - 1 : varint();
+    const vertexAt = this.p;
+    this.p += added * stride;
+    if (this.p > this.received) return -1;
+    const reused = shape === CLOSED_FAN ? k - 2 : shape === OPEN_FAN ? k - 1 : this.varint();
     if (reused < 0) return -1;
-    const F = this.faceCount, V = this.vertexCount, idx = this.indices;
-    const { slots, patch, ring, faces } = s;
+    const F = this.faceCount, idx = this.indices;
+    const { slots, patch, ring, faces, from, to } = s;
     for (let i = 0; i < reused; i++) {
-      const back = varint();
+      const back = this.varint();
       if (back < 0) return -1;
-      slots[i] = F - 1 - back;
-      patch[3 * i] = idx[3 * slots[i]];
-      patch[3 * i + 1] = idx[3 * slots[i] + 1];
-      patch[3 * i + 2] = idx[3 * slots[i] + 2];
+      const slot = (slots[i] = F - 1 - back);
+      patch[3 * i] = idx[3 * slot];
+      patch[3 * i + 1] = idx[3 * slot + 1];
+      patch[3 * i + 2] = idx[3 * slot + 2];
     }
     const corners = 3 * reused;
-    const vertex = (ref) => ref < added ? V + ref
-      : ref < added + corners ? patch[ref - added]
-      : V - 1 - (ref - added - corners);
+    this.added = added;
+    this.corners = corners;
     if (shape === CLOSED_FAN || shape === OPEN_FAN) {
-      const start = varint();
+      const start = this.varint();
       if (start < 0) return -1;
-      const apex = vertex(apexRef);
+      // The patch's outline: the sides it walks and never back.
+      let sides = 0;
+      for (let t = 0; t < corners; t++) {
+        const a = patch[t], b = patch[t % 3 === 2 ? t - 2 : t + 1];
+        let back = false;
+        for (let u = 0; u < corners && !back; u++)
+          back = patch[u] === b && patch[u % 3 === 2 ? u - 2 : u + 1] === a;
+        if (!back) {
+          from[sides] = a;
+          to[sides++] = b;
+        }
+      }
       const length = shape === CLOSED_FAN ? k : k + 1;
-      ring[0] = vertex(start);
-      // The patch's outline: from each vertex, the side the patch walks and never back.
+      ring[0] = this.vertex(start);
       for (let n = 1; n < length; n++) {
         const a = ring[n - 1];
-        let b = -1;
-        for (let t = 0; t < corners && b < 0; t++) {
-          if (patch[t] !== a) continue;
-          const c = patch[t - (t % 3) + ((t % 3) + 1) % 3];
-          let back = false;
-          for (let u = 0; u < corners && !back; u++)
-            back = patch[u] === c && patch[u - (u % 3) + ((u % 3) + 1) % 3] === a;
-          if (!back) b = c;
-        }
-        ring[n] = b;
+        let i = 0;
+        while (i < sides && from[i] !== a) i++;
+        ring[n] = to[i];
       }
+      const apex = this.vertex(apexRef);
       for (let i = 0; i < k; i++) {
         faces[3 * i] = apex;
         faces[3 * i + 1] = ring[i];
-        faces[3 * i + 2] = ring[(i + 1) % length];
+        faces[3 * i + 2] = ring[i + 1 < length ? i + 1 : 0];
       }
     } else if (shape === LISTED_RING) {
-      const open = varint();
+      const open = this.varint();
       if (open < 0) return -1;
-      const apex = vertex(apexRef);
       const length = k + open;
       for (let i = 0; i < length; i++) {
-        const ref = varint();
+        const ref = this.varint();
         if (ref < 0) return -1;
-        ring[i] = vertex(ref);
+        ring[i] = this.vertex(ref);
       }
+      const apex = this.vertex(apexRef);
       for (let i = 0; i < k; i++) {
         faces[3 * i] = apex;
         faces[3 * i + 1] = ring[i];
-        faces[3 * i + 2] = ring[(i + 1) % length];
+        faces[3 * i + 2] = ring[i + 1 < length ? i + 1 : 0];
       }
     } else {
       for (let i = 0; i < 3 * k; i++) {
-        const ref = varint();
+        const ref = this.varint();
         if (ref < 0) return -1;
-        faces[i] = vertex(ref);
+        faces[i] = this.vertex(ref);
       }
     }
     // Whole: write it.
-    const vs = this.vertices, bytes = added * stride, to = V * stride;
-    for (let i = 0; i < bytes; i++) vs[to + i] = r[vertexAt + i];
+    const vs = this.vertices, bytes = added * stride, dst = this.vertexCount * stride;
+    for (let i = 0; i < bytes; i++) vs[dst + i] = r[vertexAt + i];
     this.vertexCount += added;
     for (let i = 0; i < k; i++) {
       const slot = i < reused ? slots[i] : this.faceCount++;
@@ -211,7 +229,7 @@ export class ProgressiveDecoder {
       if (3 * slot < this.indexLow) this.indexLow = 3 * slot;
       if (3 * slot + 3 > this.indexHigh) this.indexHigh = 3 * slot + 3;
     }
-    return p;
+    return this.p;
   }
 }
 
@@ -294,7 +312,8 @@ export class VRSProgressivePlugin {
     }
     gltf.userData.progressive = {
       decoder,
-      refine: (budgetMs = 8) => refine(decoder, geometry, performance.now() + budgetMs),
+      refine: (budgetMs = 8, most = Infinity) =>
+        refine(decoder, geometry, performance.now() + budgetMs, most),
     };
   }
 }
@@ -325,24 +344,22 @@ export function growingGeometry(THREE, decoder, layout) {
   return g;
 }
 
-// Applies records until `deadline` and hands the changed ranges to the GPU; returns how many.
-export function refine(decoder, geometry, deadline) {
+// Applies records until `deadline` (`most` of them at most) and hands the changed ranges to
+// the GPU (added to those not uploaded yet; three.js clears them once it has); returns how many.
+export function refine(decoder, geometry, deadline, most = Infinity) {
   decoder.resetChanges();
-  const n = decoder.apply(deadline);
+  const n = decoder.apply(deadline, most);
   if (!n) return 0;
   const stride = decoder.layout.stride;
   const { floats, bytes } = geometry.userData;
   const from = decoder.vertexFrom, to = decoder.vertexCount;
   if (to > from) {
-    floats.clearUpdateRanges();
     floats.addUpdateRange((from * stride) / 4, ((to - from) * stride) / 4);
     floats.needsUpdate = true;
-    bytes.clearUpdateRanges();
     bytes.addUpdateRange(from * stride, (to - from) * stride);
     bytes.needsUpdate = true;
   }
   const index = geometry.index;
-  index.clearUpdateRanges();
   index.addUpdateRange(decoder.indexLow, decoder.indexHigh - decoder.indexLow);
   index.needsUpdate = true;
   geometry.setDrawRange(0, decoder.faceCount * 3);

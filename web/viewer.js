@@ -1,12 +1,18 @@
 // The page: a three.js scene that draws each level as lod_stream.js delivers it, the numbers
 // beside it, a wireframe toggle, file drop. `?url=F.glb` opens F; `&reference=K` draws level K
 // as three.js's own GLTFLoader reads the whole file instead (the browser tests compare both).
-// State for tests: window.viewer.{levels, done, error, bytes, total}.
+// A progressive .glb (docs/progressive.md) is drawn from its base, then refined record by
+// record as its bytes arrive, within a budget a frame; `&stop=N` stops after N records, and
+// `&reference=N` draws the file as GLTFLoader reads it with the VRS_mesh_progressive plugin,
+// N records applied.
+// State for tests: window.viewer.{levels, done, error, bytes, total, progressive}.
 import * as THREE from "three";
 import { OrbitControls } from "three/addons/controls/OrbitControls.js";
 import { GLTFLoader } from "three/addons/loaders/GLTFLoader.js";
 import { MeshoptDecoder } from "three/addons/libs/meshopt_decoder.module.js";
 import { RangeSource, streamLevels } from "./lod_stream.js";
+import { EXTENSION, VRSProgressivePlugin, growingGeometry, refine, streamProgressive }
+  from "./progressive.js";
 
 const $ = (id) => document.getElementById(id);
 const state = (window.viewer = { levels: [], done: false, error: null, bytes: 0, total: 0,
@@ -35,10 +41,17 @@ function resize() {
 }
 window.addEventListener("resize", resize);
 resize();
+let refining = null; // a progressive file's per-frame step
 (function loop() {
   requestAnimationFrame(loop);
+  const t = performance.now();
+  refining?.();
   controls.update();
   renderer.render(scene, camera);
+  if (refining && state.progressive) { // the first frames compile the shaders: not refining
+    const p = state.progressive;
+    if (++p.frames > 2) p.longestFrameMs = Math.max(p.longestFrameMs, performance.now() - t);
+  }
 })();
 
 // Frames the box [min, max] from a fixed direction (the same for every level and for the
@@ -168,6 +181,94 @@ async function reference(url, k) {
   state.done = true;
 }
 
+// A progressive file: the base as soon as its bytes are in, then records as they arrive, a
+// budget of milliseconds a frame; `stop`: no more than that many records.
+async function openProgressive(url, title, stop) {
+  $("title").textContent = title;
+  const p = (state.progressive = { baseBytes: 0, baseMs: 0, applied: 0, insertions: 0,
+                                   faces: 0, vertices: 0, frames: 0, longestFrameMs: 0,
+                                   samples: [] });
+  const t0 = performance.now();
+  let decoder = null, geometry = null;
+  const budgetMs = 8;
+  const update = () => {
+    p.applied = decoder.applied;
+    p.faces = decoder.faceCount;
+    p.vertices = decoder.vertexCount;
+    $("level").textContent = `${p.faces.toLocaleString()} faces, ${p.vertices.toLocaleString()} ` +
+      `vertices (${p.applied.toLocaleString()} of ${p.insertions.toLocaleString()} records)`;
+  };
+  await streamProgressive(url, {
+    onBase: (d, layout) => {
+      decoder = d;
+      p.insertions = layout.insertions;
+      p.baseBytes = state.bytes;
+      p.baseMs = performance.now() - t0;
+      const attrs = layout.attributes;
+      material = makeMaterial(layout, url, !!attrs.NORMAL, !!attrs.COLOR_0);
+      material.wireframe = wireframe;
+      frame(layout.min, layout.max);
+      geometry = growingGeometry(THREE, d, layout);
+      show(new THREE.Mesh(geometry, material));
+      update();
+      state.levels.push({ index: 0, faces: d.faceCount, bytes: p.baseBytes, ms: p.baseMs });
+      refining = () => {
+        const limit = stop ?? Infinity;
+        if (decoder.applied >= limit) return;
+        const before = decoder.applied;
+        refine(decoder, geometry, performance.now() + budgetMs, limit - decoder.applied);
+        if (decoder.applied > before) {
+          update();
+          p.samples.push([Math.round(performance.now() - t0), state.bytes, decoder.applied]);
+        }
+      };
+    },
+    onBytes: (n, total) => {
+      state.bytes = n;
+      state.total = total;
+      $("bytes").textContent = n.toLocaleString();
+      $("total").textContent = total.toLocaleString();
+    },
+  });
+  // Every byte in: done once every record (or `stop` of them) is applied and drawn.
+  await new Promise((resolve) => {
+    const wait = () => decoder.applied >= Math.min(stop ?? Infinity, decoder.layout.insertions)
+      ? resolve() : requestAnimationFrame(wait);
+    wait();
+  });
+  await new Promise((r) => requestAnimationFrame(() => requestAnimationFrame(r)));
+  p.doneMs = performance.now() - t0;
+  state.done = true;
+}
+
+// The file as GLTFLoader reads it, with the plugin: its first `count` records applied.
+async function referenceProgressive(url, count) {
+  const loader = new GLTFLoader().register((parser) => new VRSProgressivePlugin(parser, THREE));
+  const gltf = await loader.loadAsync(url);
+  const progressive = gltf.userData.progressive;
+  while (progressive.decoder.applied < count) {
+    const room = count - progressive.decoder.applied;
+    if (!progressive.refine(Infinity, room)) break;
+  }
+  let mesh = null;
+  gltf.scene.traverse((o) => { if (!mesh && o.isMesh) mesh = o; });
+  const layout = progressive.decoder.layout;
+  frame(layout.min, layout.max);
+  material = makeMaterial(layout, url, !!layout.attributes.NORMAL, !!layout.attributes.COLOR_0);
+  show(new THREE.Mesh(mesh.geometry, material));
+  renderer.render(scene, camera);
+  state.progressive = { applied: progressive.decoder.applied, faces: progressive.decoder.faceCount };
+  state.done = true;
+}
+
+// Whether the file at `url` is a progressive one (its JSON, read by a range request).
+async function isProgressive(url) {
+  const source = new RangeSource(url);
+  const head = new DataView(await source.read(0, 20));
+  const json = JSON.parse(new TextDecoder().decode(await source.read(20, 20 + head.getUint32(12, true))));
+  return !!json.meshes?.[0]?.primitives?.[0]?.extensions?.[EXTENSION];
+}
+
 function fail(e) {
   state.error = String(e?.message ?? e);
   $("level").textContent = `error: ${state.error}`;
@@ -197,9 +298,12 @@ const params = new URLSearchParams(window.location.search);
 const url = params.get("url");
 if (url) {
   const absolute = new URL(url, window.location.href).href;
-  if (params.has("reference")) reference(absolute, Number(params.get("reference"))).catch(fail);
-  else {
-    const stop = params.has("stop") ? Number(params.get("stop")) : undefined; // tests: stop at level K
-    open(absolute, absolute, url.split("/").pop(), stop).catch(fail);
-  }
+  const stop = params.has("stop") ? Number(params.get("stop")) : undefined; // tests: level K, or K records
+  isProgressive(absolute).then((progressive) => {
+    if (progressive && params.has("reference"))
+      return referenceProgressive(absolute, Number(params.get("reference")));
+    if (progressive) return openProgressive(absolute, url.split("/").pop(), stop);
+    if (params.has("reference")) return reference(absolute, Number(params.get("reference")));
+    return open(absolute, absolute, url.split("/").pop(), stop);
+  }).catch(fail);
 }

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Levels of detail in one .glb, from the command line to the browser: every file Khronos'
+# Levels of detail and progressive meshes in one .glb, from the command line to the browser: every file Khronos'
 # glTF-Validator passes with no error and no warning (an untextured scan, a textured OBJ whose
 # image lies in another folder, a colored PLY); the levels nest and each is drawn from a prefix
 # of the shared vertices; what cannot be written is refused with one line and no file; then
@@ -68,6 +68,16 @@ validate "$out/fandisk.glb"
 grep -q '"COLOR_0"' "$out/fandisk.glb" || fail "the colors in the .glb"
 grep -q 'MSFT_lod' "$out/fandisk.glb" && fail "one level needs no MSFT_lod"
 
+# A progressive file (--progressive): the validator passes it, with its extension declared and
+# not required; refusals of what it cannot hold.
+"$bin" "$data/elephant.off" "$out/elephant-p.glb" --progressive >/dev/null || fail "elephant --progressive"
+validate "$out/elephant-p.glb"
+grep -q '"extensionsUsed":\["VRS_mesh_progressive"\]' "$out/elephant-p.glb" || fail "progressive: the extension declared"
+grep -q 'extensionsRequired' "$out/elephant-p.glb" && fail "progressive: no extension required"
+"$bin" "$out/tex/bunny.obj" "$out/tex/sub/bunny-p.glb" --progressive >/dev/null || fail "textured --progressive"
+validate "$out/tex/sub/bunny-p.glb"
+grep -q '"uri":"../bunny.png"' "$out/tex/sub/bunny-p.glb" || fail "progressive: the texture's URI"
+
 # Refusals: one line, exit 2 (usage) or 1, no file.
 refuse() { # expected-exit output args...
   local code=$1 target=$2
@@ -84,6 +94,10 @@ refuse 2 "$out/x.glb" "$data/elephant.off" "$out/x.glb" --lods abc
 refuse 2 "$out/x.glb" "$data/elephant.off" "$out/x.glb" --faces 100
 refuse 2 "$out/x.glb" "$data/elephant.off" "$out/x.glb" --lods 3 --memory 1M
 refuse 2 "$out/x.glb" "$data/elephant.off" "$out/x.glb" --lods 3 --ascii
+refuse 2 "$out/x.glb" "$data/elephant.off" "$out/x.glb" --progressive --lods 3
+refuse 2 "$out/x.glb" "$data/elephant.off" "$out/x.glb" --progressive --compress
+refuse 2 "$out/x.glb" "$data/elephant.off" "$out/x.glb" --progressive --base 2
+refuse 2 "$out/x.ply" "$data/elephant.off" "$out/x.ply" --progressive
 # Several texture images: one material per .glb.
 cp /usr/share/assimp/models/OBJ/spider.obj /usr/share/assimp/models/OBJ/spider.mtl "$out/"
 refuse 1 "$out/spider.glb" "$out/spider.obj" "$out/spider.glb" --lods 2
@@ -106,6 +120,11 @@ node "$here/browser_test.mjs" "$top/python/vrsimplify/serve.py" "$out/tex/bunny-
   "$out/browser-bunny-c" --throttle 300000 --max-first 0.3 || fail "browser: compressed textured bunny"
 node "$here/browser_test.mjs" "$top/python/vrsimplify/serve.py" "$out/elephant-c.glb" \
   "$out/browser-elephant-c" --throttle 100000 --max-first 0.15 || fail "browser: compressed elephant"
+# The progressive textured bunny beside its texture: base first, refined as the bytes arrive,
+# each prefix as GLTFLoader draws it with the plugin.
+"$bin" "$out/tex/bunny.obj" "$out/tex/bunny-p.glb" --progressive >/dev/null || fail "textured --progressive beside its texture"
+node "$here/progressive_test.mjs" "$top/python/vrsimplify/serve.py" "$out/tex/bunny-p.glb" \
+  "$out/browser-bunny-p" --throttle 1000000 --max-first 0.05 || fail "browser: progressive textured bunny"
 
 echo "$failed failed"
 [ "$failed" -eq 0 ]

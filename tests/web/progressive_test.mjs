@@ -1,0 +1,183 @@
+// A progressive .glb in a real browser (Debian's Chromium, headless, driven by puppeteer-core),
+// served by vrsimplify's own server with its bandwidth throttled:
+//   - the base is drawn first, from a small share of the file, and the mesh then refines
+//     while the bytes arrive (the records applied grow at many byte counts before the last);
+//   - every record is applied in the end: the faces and vertices the file announces;
+//   - the page stays responsive: the longest frame while refining;
+//   - the file's first N records as the page streamed them look like the same N records applied
+//     by three.js's GLTFLoader with the VRS_mesh_progressive plugin (screenshots compared), for
+//     N = the records whole in 1 %, 5 %, 20 % and 100 % of the file's bytes (the pictures kept);
+//   - the browser's decoder speed, in records per second.
+// Writes the screenshots and a JSON of the figures to OUT_DIR.
+//   node tests/web/progressive_test.mjs SERVE_PY FILE.glb OUT_DIR [--throttle B/s]
+//        [--max-first F] [--max-frame-ms M]
+import { spawn } from "node:child_process";
+import { mkdir, readFile, writeFile } from "node:fs/promises";
+import { createRequire } from "node:module";
+import path from "node:path";
+
+import { ProgressiveDecoder, describeProgressive, readHeader } from "../../web/progressive.js";
+
+const require = createRequire(new URL("../../web/package.json", import.meta.url));
+const puppeteer = require("puppeteer-core");
+
+const [servePy, glb, outDir, ...rest] = process.argv.slice(2);
+const option = (name, fallback) => {
+  const i = rest.indexOf(name);
+  return i >= 0 ? Number(rest[i + 1]) : fallback;
+};
+const throttle = option("--throttle", 500_000);
+const maxFirst = option("--max-first", 0.02);
+const maxFrameMs = option("--max-frame-ms", 50);
+const python = process.env.VRS_PYTHON || "python3";
+const chromium = process.env.CHROMIUM || "/usr/bin/chromium";
+let failures = 0;
+const check = (ok, what) => {
+  console.log(`${ok ? "ok  " : "FAIL"} ${what}`);
+  if (!ok) failures++;
+};
+
+// The records whole in the file's first `bytes` bytes (the base needs its own first).
+const file = new Uint8Array(await readFile(glb));
+const header = readHeader(file);
+const layout = describeProgressive(header.json);
+function recordsWithin(bytes) {
+  const bin = file.subarray(header.binStart, Math.max(header.binStart, bytes));
+  if (bin.length < layout.recordStart) return -1;
+  const d = new ProgressiveDecoder(layout, file.subarray(header.binStart));
+  d.push(bin.subarray(layout.recordStart));
+  d.apply();
+  return d.applied;
+}
+
+await mkdir(outDir, { recursive: true });
+const server = spawn(python, [servePy, glb, "--port", "0", "--throttle", String(throttle)], {
+  stdio: ["ignore", "pipe", "inherit"],
+});
+const base = await new Promise((resolve, reject) => {
+  let text = "";
+  server.stdout.on("data", (d) => {
+    text += d;
+    const m = text.match(/at (http:\/\/[^/]+\/)/);
+    if (m) resolve(m[1]);
+  });
+  server.on("exit", (code) => reject(new Error(`server exited (${code})`)));
+  setTimeout(() => reject(new Error("server did not start")), 20000);
+});
+const name = encodeURIComponent(path.basename(glb));
+const browser = await puppeteer.launch({
+  executablePath: chromium,
+  headless: true,
+  args: ["--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
+         "--ignore-gpu-blocklist", "--window-size=480,360"],
+});
+
+async function openPage(query) {
+  const page = await browser.newPage();
+  await page.setViewport({ width: 480, height: 360 });
+  const errors = [];
+  page.on("pageerror", (e) => errors.push(String(e)));
+  await page.goto(`${base}index.html?url=/${name}${query}`);
+  await page.waitForFunction("window.viewer && (window.viewer.done || window.viewer.error)",
+                             { timeout: 300000, polling: 50 });
+  await page.waitForFunction("window.viewer.textureReady", { timeout: 60000 });
+  await new Promise((r) => setTimeout(r, 300));
+  const state = await page.evaluate(() => window.viewer);
+  if (state.error) errors.push(state.error);
+  return { page, state, errors };
+}
+
+async function pixels(page) {
+  return page.evaluate(() => {
+    const c = document.querySelector("#view canvas");
+    const t = document.createElement("canvas");
+    t.width = c.width;
+    t.height = c.height;
+    const g = t.getContext("2d");
+    g.drawImage(c, 0, 0);
+    return Array.from(g.getImageData(0, 0, t.width, t.height).data);
+  });
+}
+
+const figures = { file: path.basename(glb), throttle, bytes: file.length,
+                  insertions: layout.insertions, prefixes: [] };
+try {
+  const streamed = await openPage("");
+  check(streamed.errors.length === 0, `no page error ${streamed.errors.join("; ")}`);
+  const p = streamed.state.progressive;
+  const total = streamed.state.total;
+  check(total === file.length, `the page read ${total} bytes of ${file.length}`);
+  check(p.baseBytes <= maxFirst * total,
+        `base drawn after ${p.baseBytes} of ${total} bytes (${((100 * p.baseBytes) / total).toFixed(2)} %, ` +
+        `at most ${100 * maxFirst} %)`);
+  check(p.applied === layout.insertions && p.faces === layout.faceCount &&
+        p.vertices === layout.vertexCount,
+        `every record applied: ${p.applied} records, ${p.faces} faces, ${p.vertices} vertices`);
+  const beforeLast = p.samples.filter(([, bytes]) => bytes < total);
+  const distinctBytes = new Set(beforeLast.map(([, bytes]) => bytes)).size;
+  check(distinctBytes >= 5 && beforeLast.every((s, i) => i === 0 || s[2] > beforeLast[i - 1][2]),
+        `refined at ${distinctBytes} byte counts before the last byte, more records each time`);
+  check(p.longestFrameMs <= maxFrameMs,
+        `longest frame while refining ${p.longestFrameMs.toFixed(1)} ms (at most ${maxFrameMs})`);
+  Object.assign(figures, { baseBytes: p.baseBytes, baseMs: p.baseMs, doneMs: p.doneMs,
+                           longestFrameMs: p.longestFrameMs, samples: p.samples.length });
+  // The decoder's speed in this browser: the whole file's records, no drawing.
+  figures.recordsPerSecond = await streamed.page.evaluate(async (url) => {
+    const m = await import("./progressive.js");
+    const bytes = new Uint8Array(await (await fetch(url)).arrayBuffer());
+    const h = m.readHeader(bytes);
+    const l = m.describeProgressive(h.json);
+    let best = 0;
+    for (let run = 0; run < 3; run++) {
+      const bin = bytes.subarray(h.binStart);
+      const d = new m.ProgressiveDecoder(l, bin);
+      d.push(bin.subarray(l.recordStart, l.recordStart + l.recordBytes));
+      const t = performance.now();
+      d.apply();
+      best = Math.max(best, d.applied / ((performance.now() - t) / 1000));
+    }
+    return best;
+  }, `/${name}`);
+  console.log(`info decoder: ${(figures.recordsPerSecond / 1e6).toFixed(2)} M records/s`);
+  await streamed.page.close();
+
+  // Prefixes: streamed and stopped against GLTFLoader with the plugin, the same records.
+  for (const share of [0.01, 0.05, 0.2, 1]) {
+    const records = recordsWithin(Math.round(share * file.length));
+    if (records < 0) {
+      console.log(`info ${100 * share} % of the bytes hold no whole base`);
+      continue;
+    }
+    const a = await openPage(`&stop=${records}`);
+    const b = await openPage(`&reference=${records}`);
+    check(a.errors.length === 0 && b.errors.length === 0,
+          `${100 * share} %: no page error ${[...a.errors, ...b.errors].join("; ")}`);
+    check(a.state.progressive.faces === b.state.progressive.faces,
+          `${100 * share} % of the bytes, ${records} records: ${a.state.progressive.faces} faces ` +
+          `streamed, ${b.state.progressive.faces} through GLTFLoader`);
+    const pa = await pixels(a.page);
+    const pb = await pixels(b.page);
+    let differ = 0, drawn = 0;
+    for (let i = 0; i < pa.length; i += 4) {
+      const d = Math.max(Math.abs(pa[i] - pb[i]), Math.abs(pa[i + 1] - pb[i + 1]),
+                         Math.abs(pa[i + 2] - pb[i + 2]));
+      if (d > 24) differ++;
+      if (pb[i] !== 0x20 || pb[i + 1] !== 0x24 || pb[i + 2] !== 0x2a) drawn++;
+    }
+    const pixelsShare = differ / (pa.length / 4);
+    check(drawn > 0.02 * (pa.length / 4), `${100 * share} %: the model covers ${drawn} pixels`);
+    check(pixelsShare < 0.01,
+          `${100 * share} %: ${(100 * pixelsShare).toFixed(3)} % of pixels differ from GLTFLoader's`);
+    figures.prefixes.push({ share, records, faces: a.state.progressive.faces, pixelsDiffer: pixelsShare });
+    await a.page.screenshot({ path: path.join(outDir, `bytes-${100 * share}pct-streamed.png`) });
+    await b.page.screenshot({ path: path.join(outDir, `bytes-${100 * share}pct-gltfloader.png`) });
+    await a.page.close();
+    await b.page.close();
+  }
+} finally {
+  await browser.close();
+  server.kill();
+  await writeFile(path.join(outDir, "figures.json"), JSON.stringify(figures, null, 1));
+}
+console.log(failures ? `${failures} check(s) failed` : "all checks passed");
+process.exit(failures ? 1 : 0);
