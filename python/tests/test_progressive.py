@@ -89,7 +89,7 @@ def two_chart_obj(path, n=48):
 
 def plain_glb_faces(path):
     """The one level of a plain .glb: its faces as triples of vertex records (bytes)."""
-    from vrsimplify.progressive import _chunks
+    from vrsimplify.progressive_file import _chunks
 
     doc, binary = _chunks(open(path, "rb").read())
     prim = doc["meshes"][0]["primitives"][0]

@@ -5,7 +5,8 @@
 # told apart from a crash of ours (a crash after LOADED is ours: a failure).
 #   run_sweep.sh VRS_SWEEP CGAL_DATA_DIR OUT_DIR [--ci] [--part K/N]
 # --ci: the CGAL meshes under 400 kB and every assimp model (the full set takes longer).
-# --part K/N: the K-th of N interleaved shares of the files (ctest runs the shares side by side).
+# --part K/N: the K-th of N shares of the files, of about equal bytes (ctest runs them side by
+# side).
 # VRS_SWEEP_FLAGS: more flags for vrs_sweep (the sanitizer build passes --no-rerun).
 set -u
 sweep=$1 cgal=$2 out=$3 ci=${4:-} part=1/1
@@ -24,10 +25,17 @@ while IFS= read -r f; do files+=("$f"); done < <(
   find "$(dirname "$cgal")/points_3" -maxdepth 1 -type f \( -name '*.off' -o -name '*.ply' \) | sort
   find /usr/share/assimp/models -type f | sort)
 [ ${#files[@]} -gt 100 ] || { echo "sweep: only ${#files[@]} files: run scripts/setup.sh"; exit 1; }
+# Shares of about equal bytes (the time follows the size): the largest file first, each to the
+# share holding the fewest bytes so far; then each share in name order.
 mine=()
-for i in "${!files[@]}"; do
-  [ $((i % shares + 1)) -eq "$share" ] && mine+=("${files[$i]}")
-done
+while IFS= read -r f; do mine+=("$f"); done < <(
+  for f in "${files[@]}"; do printf '%s\t%s\n' "$(stat -c %s "$f")" "$f"; done | sort -t$'\t' -k1,1nr -k2 |
+    awk -F'\t' -v shares="$shares" -v share="$share" '{
+      best = 1
+      for (k = 2; k <= shares; k++) if (load[k] < load[best]) best = k
+      load[best] += $1
+      if (best == share) print $2
+    }' | sort)
 files=("${mine[@]}")
 
 ours_crashed=0 reader_crashed=0
