@@ -11,8 +11,8 @@
 #include <numeric>
 #include <random>
 
-#include "orientation.h" // the core's
-#include "topology.h"
+#include "mesh/orientation.h" // the core's
+#include "mesh/topology.h"
 
 namespace vrs_bench {
 

@@ -4,9 +4,9 @@
 
 #include <vector>
 
-#include "evaluation.h"
-#include "topology.h"
-#include "triangulation.h"
+#include "evaluate/evaluation.h"
+#include "mesh/topology.h"
+#include "fill/triangulation.h"
 
 struct RingCase {
   vrs::Mesh mesh;

@@ -3,8 +3,8 @@
 
 #include <cmath>
 
-#include "accounting.h"
-#include "candidates.h"
+#include "driver/accounting.h"
+#include "fill/candidates.h"
 
 using namespace vrs;
 

@@ -8,7 +8,7 @@
 #include <utility>
 #include <vector>
 
-#include "candidates.h"
+#include "fill/candidates.h"
 #include "ring_case.h"
 #include "test_meshes.h"
 

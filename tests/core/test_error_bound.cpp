@@ -1,4 +1,4 @@
-// The certified error bound (Options::max_error, core/src/error_bound.cpp): exact on cases whose
+// The certified error bound (Options::max_error, core/src/evaluate/error_bound.cpp): exact on cases whose
 // Hausdorff distance is known, a bound on real meshes (every removed input vertex within it of
 // the output, measured exactly), and what stops the run.
 #include <gtest/gtest.h>
@@ -6,7 +6,7 @@
 #include <cmath>
 #include <limits>
 
-#include "local_error.h"
+#include "evaluate/local_error.h"
 #include "mesh_checks.h"
 #include "test_meshes.h"
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <cstdio>
 
-#include "evaluation.h"
+#include "evaluate/evaluation.h"
 #include "test_meshes.h"
 
 using namespace vrs;

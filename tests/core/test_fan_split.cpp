@@ -5,10 +5,10 @@
 #include <cmath>
 #include <set>
 
-#include "fan_split.h"
+#include "mesh/fan_split.h"
 #include "mesh_checks.h"
 #include "test_meshes.h"
-#include "topology.h"
+#include "mesh/topology.h"
 
 using namespace vrs;
 

@@ -5,7 +5,7 @@
 #include <set>
 #include <utility>
 
-#include "flat_edge_set.h"
+#include "base/flat_edge_set.h"
 
 using namespace vrs;
 

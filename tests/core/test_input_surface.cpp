@@ -1,4 +1,4 @@
-#include "input_surface.h"
+#include "evaluate/input_surface.h"
 
 #include <gtest/gtest.h>
 
@@ -9,10 +9,10 @@
 #include <string>
 
 #include "fold_over.h"
-#include "local_error.h"
+#include "evaluate/local_error.h"
 #include "mesh_checks.h"
 #include "test_meshes.h"
-#include "workers.h"
+#include "base/workers.h"
 
 namespace {
 

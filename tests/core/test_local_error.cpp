@@ -4,8 +4,8 @@
 #include <cmath>
 #include <random>
 
-#include "local_error.h"
-#include "removal.h"
+#include "evaluate/local_error.h"
+#include "remove/removal.h"
 #include "test_meshes.h"
 #include "vrs/simplify.h"
 

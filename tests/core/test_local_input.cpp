@@ -1,4 +1,4 @@
-#include "local_input.h"
+#include "evaluate/local_input.h"
 
 #include <gtest/gtest.h>
 
@@ -8,8 +8,8 @@
 #include <random>
 #include <vector>
 
-#include "input_surface.h"
-#include "local_error.h"
+#include "evaluate/input_surface.h"
+#include "evaluate/local_error.h"
 
 namespace {
 

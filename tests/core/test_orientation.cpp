@@ -5,9 +5,9 @@
 #include <cmath>
 
 #include "mesh_checks.h"
-#include "orientation.h"
+#include "mesh/orientation.h"
 #include "test_meshes.h"
-#include "topology.h"
+#include "mesh/topology.h"
 
 using namespace vrs;
 

@@ -7,8 +7,8 @@
 #include <random>
 
 #include "mesh_checks.h"
-#include "parts.h"
-#include "spatial_order.h"
+#include "driver/parts.h"
+#include "mesh/spatial_order.h"
 #include "test_meshes.h"
 
 using namespace vrs;

@@ -8,7 +8,7 @@
 #include <map>
 #include <set>
 
-#include "corner_seams.h"
+#include "mesh/corner_seams.h"
 #include "test_meshes.h"
 #include "vrs/progressive.h"
 

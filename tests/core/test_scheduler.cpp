@@ -2,8 +2,8 @@
 // commits still holds.
 #include <gtest/gtest.h>
 
-#include "bucket_queue.h"
-#include "scheduler.h"
+#include "queue/bucket_queue.h"
+#include "driver/scheduler.h"
 
 using namespace vrs;
 

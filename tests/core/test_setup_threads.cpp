@@ -8,12 +8,12 @@
 #include <limits>
 #include <random>
 
-#include "local_error.h"
-#include "spatial_order.h"
-#include "split_vertices.h"
+#include "evaluate/local_error.h"
+#include "mesh/spatial_order.h"
+#include "mesh/split_vertices.h"
 #include "test_meshes.h"
-#include "topology.h"
-#include "workers.h"
+#include "mesh/topology.h"
+#include "base/workers.h"
 
 using namespace vrs;
 

@@ -5,9 +5,9 @@
 
 #include <map>
 
-#include "geometry.h"
+#include "base/geometry.h"
 #include "mesh_checks.h"
-#include "split_vertices.h"
+#include "mesh/split_vertices.h"
 #include "test_meshes.h"
 
 using namespace vrs;

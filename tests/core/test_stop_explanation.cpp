@@ -1,7 +1,7 @@
 // The words of Report::stop_detail, from the counts of the remaining vertices.
 #include <gtest/gtest.h>
 
-#include "stop_explanation.h"
+#include "driver/stop_explanation.h"
 
 using namespace vrs;
 

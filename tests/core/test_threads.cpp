@@ -8,7 +8,7 @@
 
 #include "mesh_checks.h"
 #include "test_meshes.h"
-#include "workers.h"
+#include "base/workers.h"
 
 using namespace vrs;
 

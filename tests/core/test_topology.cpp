@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 
 #include "test_meshes.h"
-#include "topology.h"
+#include "mesh/topology.h"
 
 using namespace vrs;
 

@@ -3,7 +3,7 @@
 #include <cmath>
 #include <random>
 
-#include "triangulation.h"
+#include "fill/triangulation.h"
 
 using namespace vrs;
 

@@ -4,11 +4,11 @@
 #include <cmath>
 #include <memory>
 
-#include "candidates.h"
-#include "removal.h"
+#include "fill/candidates.h"
+#include "remove/removal.h"
 #include "ring_case.h"
 #include "test_meshes.h"
-#include "vetoes.h"
+#include "remove/vetoes.h"
 
 using namespace vrs;
 

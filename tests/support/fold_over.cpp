@@ -4,8 +4,8 @@
 #include <cmath>
 #include <vector>
 
-#include "geometry.h"
-#include "local_error.h"
+#include "base/geometry.h"
+#include "evaluate/local_error.h"
 
 namespace vrs_test {
 

@@ -1,7 +1,7 @@
 #include "mesh_checks.h"
 
 #include "fold_over.h"
-#include "split_vertices.h"
+#include "mesh/split_vertices.h"
 
 #include <algorithm>
 #include <cmath>
