@@ -186,7 +186,7 @@ async function reference(url, k) {
 async function openProgressive(url, title, stop) {
   $("title").textContent = title;
   const p = (state.progressive = { baseBytes: 0, baseMs: 0, applied: 0, insertions: 0,
-                                   faces: 0, vertices: 0, frames: 0, longestFrameMs: 0,
+                                   faces: 0, vertices: 0, frames: 0, longestFrameMs: 0, longestRefineMs: 0,
                                    samples: [] });
   const t0 = performance.now();
   let decoder = null, geometry = null;
@@ -216,7 +216,9 @@ async function openProgressive(url, title, stop) {
         const limit = stop ?? Infinity;
         if (decoder.applied >= limit) return;
         const before = decoder.applied;
-        refine(decoder, geometry, performance.now() + budgetMs, limit - decoder.applied);
+        const t = performance.now();
+        refine(decoder, geometry, t + budgetMs, limit - decoder.applied);
+        p.longestRefineMs = Math.max(p.longestRefineMs, performance.now() - t);
         if (decoder.applied > before) {
           update();
           p.samples.push([Math.round(performance.now() - t0), state.bytes, decoder.applied]);
