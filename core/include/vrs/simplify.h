@@ -3,7 +3,8 @@
 //
 // One entry point: vrs::simplify(mesh, options) simplifies an indexed triangle mesh in place.
 // Every output vertex is an input vertex (the report carries the old->new index map), so any
-// per-vertex attribute the caller keeps beside the mesh survives exactly.
+// per-vertex attribute the caller keeps beside the mesh survives exactly. The words used here
+// (priority, veto, fill, eased passes, slide, ...) are defined in docs/glossary.md.
 #pragma once
 
 #include <cstddef>

@@ -1,0 +1,78 @@
+// Pictures of a progressive .glb after given shares of its bytes: for each share, the records
+// whole in that prefix applied by three.js's GLTFLoader with the VRS_mesh_progressive plugin
+// (the viewer page's &reference=N), in headless Chromium. Writes OUT_DIR/bytes-<share>.png
+// and prints one line a picture: share, records, faces.
+//   node tests/web/progressive_pictures.mjs SERVE_PY FILE.glb OUT_DIR SHARE...
+import { spawn } from "node:child_process";
+import { mkdir, readFile } from "node:fs/promises";
+import { createRequire } from "node:module";
+import path from "node:path";
+
+import { ProgressiveDecoder, describeProgressive, readHeader } from "../../web/progressive.js";
+
+const require = createRequire(new URL("../../web/package.json", import.meta.url));
+const puppeteer = require("puppeteer-core");
+const [servePy, glb, outDir, ...shares] = process.argv.slice(2);
+const python = process.env.VRS_PYTHON || "python3";
+const chromium = process.env.CHROMIUM || "/usr/bin/chromium";
+
+const file = new Uint8Array(await readFile(glb));
+const header = readHeader(file);
+const layout = describeProgressive(header.json);
+// The records whole in the file's first `bytes` bytes (-1: not even the base).
+function recordsWithin(bytes) {
+  const bin = file.subarray(header.binStart, Math.max(header.binStart, bytes));
+  if (bin.length < layout.recordStart) return -1;
+  const d = new ProgressiveDecoder(layout, file.subarray(header.binStart));
+  d.push(bin.subarray(layout.recordStart));
+  d.apply();
+  return d.applied;
+}
+
+await mkdir(outDir, { recursive: true });
+const server = spawn(python, [servePy, glb, "--port", "0"], { stdio: ["ignore", "pipe", "inherit"] });
+const base = await new Promise((resolve, reject) => {
+  let text = "";
+  server.stdout.on("data", (d) => {
+    text += d;
+    const m = text.match(/at (http:\/\/[^/]+\/)/);
+    if (m) resolve(m[1]);
+  });
+  server.on("exit", (code) => reject(new Error(`server exited (${code})`)));
+});
+const browser = await puppeteer.launch({
+  executablePath: chromium,
+  headless: true,
+  args: ["--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
+         "--ignore-gpu-blocklist", "--window-size=360,360"],
+});
+let failed = 0;
+try {
+  for (const share of shares.map(Number)) {
+    const records = recordsWithin(Math.round(share * file.length));
+    if (records < 0) {
+      console.log(`${share}: the base is not whole yet`);
+      failed++;
+      continue;
+    }
+    const page = await browser.newPage();
+    await page.setViewport({ width: 360, height: 360 });
+    await page.goto(`${base}index.html?url=/${encodeURIComponent(path.basename(glb))}&reference=${records}`);
+    await page.waitForFunction("window.viewer && (window.viewer.done || window.viewer.error)",
+                               { timeout: 600000, polling: 100 });
+    await page.evaluate(() => { document.getElementById("panel").style.display = "none"; });
+    await new Promise((r) => setTimeout(r, 500));
+    const state = await page.evaluate(() => window.viewer);
+    if (state.error) {
+      console.log(`${share}: ${state.error}`);
+      failed++;
+    }
+    await page.screenshot({ path: path.join(outDir, `bytes-${share}.png`) });
+    console.log(`${share} ${records} ${state.progressive?.faces}`);
+    await page.close();
+  }
+} finally {
+  await browser.close();
+  server.kill();
+}
+process.exit(failed ? 1 : 0);
