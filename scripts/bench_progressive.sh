@@ -8,7 +8,8 @@
 # standalone run to the same face count (mean and max error against the input, vrs_bench
 # --compare), Khronos' validator, and the browser: the viewer page in headless Chromium,
 # served throttled (tests/web/progressive_test.mjs: records a second, longest frame; the whole
-# stream for the bunny, the base and the decoder alone for the elephant).
+# stream for the bunny, the base and the decoder alone for the elephant), and the bunny's
+# pictures after 1, 5, 20 and 100 % of its bytes (bench/renders/progressive_bunny.png).
 #   scripts/bench_progressive.sh [--samples S] [--only NAME]
 set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
@@ -67,6 +68,17 @@ for name in bunny_loop2 elephant_textured; do
 \"browser\":$("$python" -c 'import json, sys; print(json.dumps(json.load(open(sys.argv[1]))))' "$work/browser/figures.json"),\
 \"browser_checks\":\"$(grep -c '^ok' "$work/browser.txt") ok, $(grep -c '^FAIL' "$work/browser.txt") failed\"}" >>"$results"
   grep '^FAIL' "$work/browser.txt" >&2 || true
+  if [ "$name" = bunny_loop2 ]; then # the README's strip: the base, 5, 20 and 100 % of the bytes
+    VRS_PYTHON=$python node "$top/tests/web/progressive_pictures.mjs" "$top/python/vrsimplify/serve.py" \
+      "$work/p.glb" "$work/pictures" base 0.05 0.2 1 >"$work/pictures.txt"
+    strip=()
+    while read -r share records faces needed || [ -n "${share:-}" ]; do
+      strip+=(-label "$(awk -v n="$needed" -v f="$faces" 'BEGIN { printf "%.3g %%%% of the bytes, %d faces", 100 * n, f }')"
+              "$work/pictures/bytes-$share.png")
+    done <"$work/pictures.txt"
+    montage "${strip[@]}" -tile 4x1 -geometry 240x240+4+4 -background '#20242a' -fill white \
+      -font DejaVu-Sans -pointsize 13 "$top/bench/renders/progressive_bunny.png"
+  fi
 done
 if [ -n "$only" ] && [ -s "$top/bench/progressive.jsonl" ]; then # keep the other mesh's line
   grep -v "\"mesh\":\"$only\"" "$top/bench/progressive.jsonl" >>"$results" || true

@@ -131,8 +131,8 @@ def read_progressive(source, records: int | None = None) -> ProgressiveFile:
     at = applied = 0
     try:
         while applied < limit:
-            at = _apply_record(stream, at, stride, live, vertex_rows, vertex_count)
-            vertex_count = sum(len(r) for r in vertex_rows)
+            at, added = _apply_record(stream, at, stride, live, vertex_rows, vertex_count)
+            vertex_count += added
             applied += 1
     except EOFError:  # a prefix of the file: the last record is not whole
         pass
@@ -149,7 +149,8 @@ def read_progressive(source, records: int | None = None) -> ProgressiveFile:
 
 
 def _apply_record(stream, at, stride, live, vertex_rows, before):
-    """Applies the record at ``at``; returns where the next begins (EOFError: not whole)."""
+    """Applies the record at ``at``; returns where the next begins and the vertices it added
+    (EOFError: the record is not whole)."""
     head, at = _varint(stream, at)
     k, shape, irregular = head >> 3, (head >> 1) & 3, head & 1
     added, apex_ref = 1, 0
@@ -181,17 +182,12 @@ def _apply_record(stream, at, stride, live, vertex_rows, before):
 
     if shape in (_CLOSED_FAN, _OPEN_FAN):
         first, at = _varint(stream, at)
-        following = {}
-        for t in range(0, len(patch), 3):
-            for c in range(3):
-                following[(patch[t + c])] = following.get(patch[t + c], []) + [patch[t + (c + 1) % 3]]
         # The outline: each side the patch walks once and never back.
         sides = {(patch[t + c], patch[t + (c + 1) % 3]) for t in range(0, len(patch), 3) for c in range(3)}
+        outline = {a: b for a, b in sides if (b, a) not in sides}
         ring = [vertex(first)]
         while len(ring) < (k if shape == _CLOSED_FAN else k + 1):
-            a = ring[-1]
-            nxt = [b for b in following.get(a, []) if (b, a) not in sides]
-            ring.append(nxt[0])
+            ring.append(outline[ring[-1]])
         apex = vertex(apex_ref)
         n = len(ring)
         new_faces = [[apex, ring[i], ring[(i + 1) % n]] for i in range(k)]
@@ -218,4 +214,4 @@ def _apply_record(stream, at, stride, live, vertex_rows, before):
             live[slots[i]] = f
         else:
             live.append(f)
-    return at
+    return at, added

@@ -1,7 +1,8 @@
 // Pictures of a progressive .glb after given shares of its bytes: for each share, the records
 // whole in that prefix applied by three.js's GLTFLoader with the VRS_mesh_progressive plugin
-// (the viewer page's &reference=N), in headless Chromium. Writes OUT_DIR/bytes-<share>.png
-// and prints one line a picture: share, records, faces.
+// (the viewer page's &reference=N), in headless Chromium; the share "base" is the base alone.
+// Writes OUT_DIR/bytes-<share>.png and prints one line a picture: share, records, faces, and
+// the share of the bytes they need.
 //   node tests/web/progressive_pictures.mjs SERVE_PY FILE.glb OUT_DIR SHARE...
 import { spawn } from "node:child_process";
 import { mkdir, readFile } from "node:fs/promises";
@@ -48,8 +49,8 @@ const browser = await puppeteer.launch({
 });
 let failed = 0;
 try {
-  for (const share of shares.map(Number)) {
-    const records = recordsWithin(Math.round(share * file.length));
+  for (const share of shares) {
+    const records = share === "base" ? 0 : recordsWithin(Math.round(Number(share) * file.length));
     if (records < 0) {
       console.log(`${share}: the base is not whole yet`);
       failed++;
@@ -68,7 +69,8 @@ try {
       failed++;
     }
     await page.screenshot({ path: path.join(outDir, `bytes-${share}.png`) });
-    console.log(`${share} ${records} ${state.progressive?.faces}`);
+    const needed = share === "base" ? header.binStart + layout.recordStart : Number(share) * file.length;
+    console.log(`${share} ${records} ${state.progressive?.faces} ${(needed / file.length).toFixed(4)}`);
     await page.close();
   }
 } finally {
