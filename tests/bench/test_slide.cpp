@@ -1,5 +1,5 @@
-// The slide after the run (Options::slide, core/src/driver/slide.cpp), judged by the benchmark's own
-// measure: kept vertices give their place to removed input vertices only where the output then
+// The slide after the run (Options::slide, core/src/driver/slide.cpp), judged by the benchmark's
+// own measure: kept vertices give their place to removed input vertices only where the output then
 // stands nearer the input, and the run's every invariant holds.
 #include <gtest/gtest.h>
 

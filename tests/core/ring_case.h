@@ -5,8 +5,8 @@
 #include <vector>
 
 #include "evaluate/evaluation.h"
-#include "mesh/topology.h"
 #include "fill/triangulation.h"
+#include "mesh/topology.h"
 
 struct RingCase {
   vrs::Mesh mesh;

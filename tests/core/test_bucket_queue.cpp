@@ -4,9 +4,9 @@
 #include <random>
 #include <vector>
 
+#include "base/workers.h"
 #include "queue/bucket_queue.h"
 #include "queue/heap_queue.h"
-#include "base/workers.h"
 
 using namespace vrs;
 

@@ -1,6 +1,6 @@
-// The certified error bound (Options::max_error, core/src/evaluate/error_bound.cpp): exact on cases whose
-// Hausdorff distance is known, a bound on real meshes (every removed input vertex within it of
-// the output, measured exactly), and what stops the run.
+// The certified error bound (Options::max_error, core/src/evaluate/error_bound.cpp): exact on cases
+// whose Hausdorff distance is known, a bound on real meshes (every removed input vertex within it
+// of the output, measured exactly), and what stops the run.
 #include <gtest/gtest.h>
 
 #include <cmath>

@@ -6,9 +6,9 @@
 #include <set>
 
 #include "mesh/fan_split.h"
+#include "mesh/topology.h"
 #include "mesh_checks.h"
 #include "test_meshes.h"
-#include "mesh/topology.h"
 
 using namespace vrs;
 

@@ -8,11 +8,11 @@
 #include <random>
 #include <string>
 
-#include "fold_over.h"
+#include "base/workers.h"
 #include "evaluate/local_error.h"
+#include "fold_over.h"
 #include "mesh_checks.h"
 #include "test_meshes.h"
-#include "base/workers.h"
 
 namespace {
 

@@ -4,10 +4,10 @@
 
 #include <cmath>
 
-#include "mesh_checks.h"
 #include "mesh/orientation.h"
-#include "test_meshes.h"
 #include "mesh/topology.h"
+#include "mesh_checks.h"
+#include "test_meshes.h"
 
 using namespace vrs;
 

@@ -1,8 +1,8 @@
 // The run's result back in the input's order (output.h), on a hand-made internal state.
 #include <gtest/gtest.h>
 
-#include "write/output.h"
 #include "mesh/topology.h"
+#include "write/output.h"
 
 using namespace vrs;
 

@@ -6,9 +6,9 @@
 #include <map>
 #include <random>
 
-#include "mesh_checks.h"
 #include "driver/parts.h"
 #include "mesh/spatial_order.h"
+#include "mesh_checks.h"
 #include "test_meshes.h"
 
 using namespace vrs;

@@ -2,8 +2,8 @@
 // commits still holds.
 #include <gtest/gtest.h>
 
-#include "queue/bucket_queue.h"
 #include "driver/scheduler.h"
+#include "queue/bucket_queue.h"
 
 using namespace vrs;
 

@@ -8,12 +8,12 @@
 #include <limits>
 #include <random>
 
+#include "base/workers.h"
 #include "evaluate/local_error.h"
 #include "mesh/spatial_order.h"
 #include "mesh/split_vertices.h"
-#include "test_meshes.h"
 #include "mesh/topology.h"
-#include "base/workers.h"
+#include "test_meshes.h"
 
 using namespace vrs;
 

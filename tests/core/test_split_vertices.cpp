@@ -6,8 +6,8 @@
 #include <map>
 
 #include "base/geometry.h"
-#include "mesh_checks.h"
 #include "mesh/split_vertices.h"
+#include "mesh_checks.h"
 #include "test_meshes.h"
 
 using namespace vrs;

@@ -6,9 +6,9 @@
 #include <chrono>
 #include <cmath>
 
+#include "base/workers.h"
 #include "mesh_checks.h"
 #include "test_meshes.h"
-#include "base/workers.h"
 
 using namespace vrs;
 

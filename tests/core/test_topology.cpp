@@ -1,7 +1,7 @@
 #include <gtest/gtest.h>
 
-#include "test_meshes.h"
 #include "mesh/topology.h"
+#include "test_meshes.h"
 
 using namespace vrs;
 

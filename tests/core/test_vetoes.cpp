@@ -6,9 +6,9 @@
 
 #include "fill/candidates.h"
 #include "remove/removal.h"
+#include "remove/vetoes.h"
 #include "ring_case.h"
 #include "test_meshes.h"
-#include "remove/vetoes.h"
 
 using namespace vrs;
 

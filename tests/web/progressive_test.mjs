@@ -3,14 +3,14 @@
 //   - the base is drawn first, from a small share of the file, and the mesh then refines
 //     while the bytes arrive (the records applied grow at many byte counts before the last);
 //   - every record is applied in the end: the faces and vertices the file announces;
-//   - the page stays responsive: the longest frame while refining;
+//   - the longest frame while refining and the longest refining step (printed: figures);
 //   - the file's first N records as the page streamed them look like the same N records applied
 //     by three.js's GLTFLoader with the VRS_mesh_progressive plugin (screenshots compared), for
 //     N = the records whole in 1 %, 5 %, 20 % and 100 % of the file's bytes (the pictures kept);
 //   - the browser's decoder speed, in records per second.
 // Writes the screenshots and a JSON of the figures to OUT_DIR.
 //   node tests/web/progressive_test.mjs SERVE_PY FILE.glb OUT_DIR [--throttle B/s]
-//        [--max-first F] [--max-frame-ms M] [--stream-only | --decoder-only]
+//        [--max-first F] [--stream-only | --decoder-only]
 // --decoder-only: the base drawn and the decoder's speed, not the whole stream (huge meshes,
 // whose every frame SwiftShader draws in seconds).
 import { spawn } from "node:child_process";
@@ -30,7 +30,6 @@ const option = (name, fallback) => {
 };
 const throttle = option("--throttle", 500_000);
 const maxFirst = option("--max-first", 0.02);
-const maxFrameMs = option("--max-frame-ms", 50);
 const decoderOnly = rest.includes("--decoder-only");
 const streamOnly = decoderOnly || rest.includes("--stream-only"); // no prefix renders
 const python = process.env.VRS_PYTHON || "python3";
@@ -123,10 +122,9 @@ try {
     const distinctBytes = new Set(beforeLast.map(([, bytes]) => bytes)).size;
     check(distinctBytes >= 5 && beforeLast.every((s, i) => i === 0 || s[2] > beforeLast[i - 1][2]),
           `refined at ${distinctBytes} byte counts before the last byte, more records each time`);
-    check(p.longestFrameMs <= maxFrameMs,
-          `longest frame while refining ${p.longestFrameMs.toFixed(1)} ms (at most ${maxFrameMs})`);
-    check(p.longestRefineMs <= maxFrameMs,
-          `longest refining step ${p.longestRefineMs.toFixed(1)} ms (at most ${maxFrameMs})`);
+    // Figures, not checks: a test's timings judge the machine it runs on (bench/PROGRESSIVE.md).
+    console.log(`info longest frame while refining ${p.longestFrameMs.toFixed(1)} ms, ` +
+                `longest refining step ${p.longestRefineMs.toFixed(1)} ms`);
     Object.assign(figures, { baseBytes: p.baseBytes, baseMs: p.baseMs, doneMs: p.doneMs,
                              longestFrameMs: p.longestFrameMs, longestRefineMs: p.longestRefineMs,
                              samples: p.samples.length });

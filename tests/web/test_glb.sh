@@ -124,7 +124,7 @@ node "$here/browser_test.mjs" "$top/python/vrsimplify/serve.py" "$out/elephant-c
 # each prefix as GLTFLoader draws it with the plugin.
 "$bin" "$out/tex/bunny.obj" "$out/tex/bunny-p.glb" --progressive >/dev/null || fail "textured --progressive beside its texture"
 node "$here/progressive_test.mjs" "$top/python/vrsimplify/serve.py" "$out/tex/bunny-p.glb" \
-  "$out/browser-bunny-p" --throttle 1000000 --max-first 0.05 || fail "browser: progressive textured bunny"
+  "$out/browser-bunny-p" --throttle 500000 --max-first 0.25 || fail "browser: progressive textured bunny"
 
 echo "$failed failed"
 [ "$failed" -eq 0 ]
