@@ -25,7 +25,7 @@ declare -A args=(
   [--simplify-boundary]="--simplify-boundary" [--split-vertices]="--split-vertices keep"
   [--threads]="--threads 1" [--version]="--version"
   [--vertices]="--vertices 3000" [--memory]="" [--scheduler]="" [--work-dir]="" [--workers]="--workers 1"
-  [--lods]="" [--compress]=""
+  [--lods]="" [--compress]="" [--progressive]=""
 )
 # Options that are about the run, not the mesh: the same output with or without them.
 same_output=" --json --progress --threads --workers --error-bound --ascii "
@@ -36,9 +36,9 @@ done
 "$bin" "$in" "$out/base-tiled.ply" --ratio 0.1 --memory 1M --quiet >/dev/null || fail "the tiled base run"
 for opt in "${!args[@]}"; do
   a=${args[$opt]}
-  # The tiled switch itself, no run, or a .glb output (tests/web/test_glb.sh: --lods with any
-  # other output and with --memory is refused there).
-  case $opt in --memory|--scheduler|--work-dir|--version|--lods|--compress) continue ;; esac
+  # The tiled switch itself, no run, or a .glb output (tests/web/test_glb.sh: --lods and
+  # --progressive with any other output and with --memory are refused there).
+  case $opt in --memory|--scheduler|--work-dir|--version|--lods|--compress|--progressive) continue ;; esac
   target="--ratio 0.1"
   case $opt in --ratio|--faces|--vertices|--auto|--max-factor|--max-error) target="" ;; esac
   name=${opt#--}
