@@ -20,14 +20,9 @@ samples=100000
 "$top/scripts/build.sh" >/dev/null
 bin=$top/build/bin/vrsimplify bench=$top/build/bin/vrs_bench
 python=${VRS_CACHE:-/var/cache/vrsimplify}/venv/bin/python
-inputs=$top/third_party/bench-inputs data=$top/third_party/cgal-data/data/meshes
-mkdir -p "$inputs"
+inputs=$("$top/scripts/lib/bench_inputs.sh" "$bench" "$python")
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
-[ -s "$inputs/bunny_loop2.ply" ] || "$bench" --loop "$data/bunny00.off" 2 "$inputs/bunny_loop2.ply" >&2
-[ -s "$inputs/elephant_loop3.ply" ] || "$bench" --loop "$data/refined_elephant.off" 3 "$inputs/elephant_loop3.ply" >&2
-[ -s "$inputs/elephant_textured.ply" ] ||
-  "$python" "$top/bench/attributed_mesh.py" textured "$inputs/elephant_loop3.ply" "$inputs/elephant_textured.ply" >&2
 ratios="0.5 0.1 0.01"
 results=$work/results.jsonl
 for name in bunny_loop2 elephant_textured; do

@@ -8,13 +8,10 @@
 // Writes the screenshots and a JSON of the figures to OUT_DIR.
 //   node tests/web/browser_test.mjs SERVE_PY FILE.glb OUT_DIR [--throttle B/s] [--max-first F]
 //                                   [--stream-only]
-import { spawn } from "node:child_process";
 import { mkdir, writeFile } from "node:fs/promises";
-import { createRequire } from "node:module";
 import path from "node:path";
 
-const require = createRequire(new URL("../../web/package.json", import.meta.url));
-const puppeteer = require("puppeteer-core");
+import { compare, launchBrowser, openPage as open, pixels, startServer } from "./harness.mjs";
 
 const [servePy, glb, outDir, ...rest] = process.argv.slice(2);
 const option = (name, fallback) => {
@@ -24,8 +21,6 @@ const option = (name, fallback) => {
 const throttle = option("--throttle", 2_000_000);
 const maxFirst = option("--max-first", 0.02); // share of the file the coarsest level may need
 const streamOnly = rest.includes("--stream-only"); // the streaming checks, no per-level renders
-const python = process.env.VRS_PYTHON || "python3";
-const chromium = process.env.CHROMIUM || "/usr/bin/chromium";
 let failures = 0;
 const check = (ok, what) => {
   console.log(`${ok ? "ok  " : "FAIL"} ${what}`);
@@ -33,55 +28,9 @@ const check = (ok, what) => {
 };
 
 await mkdir(outDir, { recursive: true });
-const server = spawn(python, [servePy, glb, "--port", "0", "--throttle", String(throttle)], {
-  stdio: ["ignore", "pipe", "inherit"],
-});
-const base = await new Promise((resolve, reject) => {
-  let text = "";
-  server.stdout.on("data", (d) => {
-    text += d;
-    const m = text.match(/at (http:\/\/[^/]+\/)/);
-    if (m) resolve(m[1]);
-  });
-  server.on("exit", (code) => reject(new Error(`server exited (${code})`)));
-  setTimeout(() => reject(new Error("server did not start")), 20000);
-});
-const name = encodeURIComponent(path.basename(glb));
-
-const browser = await puppeteer.launch({
-  executablePath: chromium,
-  headless: true,
-  args: ["--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
-         "--ignore-gpu-blocklist", "--window-size=480,360"],
-});
-
-async function openPage(query) {
-  const page = await browser.newPage();
-  await page.setViewport({ width: 480, height: 360 });
-  const errors = [];
-  page.on("pageerror", (e) => errors.push(String(e)));
-  await page.goto(`${base}index.html?url=/${name}${query}`);
-  await page.waitForFunction("window.viewer && (window.viewer.done || window.viewer.error)",
-                             { timeout: 300000, polling: 50 });
-  await page.waitForFunction("window.viewer.textureReady", { timeout: 60000 });
-  await new Promise((r) => setTimeout(r, 300)); // a few frames with everything in place
-  const state = await page.evaluate(() => window.viewer);
-  if (state.error) errors.push(state.error);
-  if (state.textureError) errors.push(`texture not loaded: ${state.textureError}`);
-  return { page, state, errors };
-}
-
-async function pixels(page) {
-  return page.evaluate(() => {
-    const c = document.querySelector("#view canvas");
-    const t = document.createElement("canvas");
-    t.width = c.width;
-    t.height = c.height;
-    const g = t.getContext("2d");
-    g.drawImage(c, 0, 0);
-    return Array.from(g.getImageData(0, 0, t.width, t.height).data);
-  });
-}
+const { server, base } = await startServer(servePy, glb, throttle);
+const browser = await launchBrowser(480, 360);
+const openPage = (query) => open(browser, base, glb, query, 480, 360);
 
 const figures = { file: path.basename(glb), throttle, levels: [] };
 try {
@@ -114,17 +63,8 @@ try {
     const faces = b.state.levels[0]?.faces;
     check(a.state.levels.at(-1)?.faces === faces,
           `level ${k}: ${a.state.levels.at(-1)?.faces} faces streamed, ${faces} read by GLTFLoader`);
-    const pa = await pixels(a.page);
-    const pb = await pixels(b.page);
-    let differ = 0, drawn = 0;
-    for (let i = 0; i < pa.length; i += 4) {
-      const d = Math.max(Math.abs(pa[i] - pb[i]), Math.abs(pa[i + 1] - pb[i + 1]),
-                         Math.abs(pa[i + 2] - pb[i + 2]));
-      if (d > 24) differ++;
-      if (pb[i] !== 0x20 || pb[i + 1] !== 0x24 || pb[i + 2] !== 0x2a) drawn++;
-    }
-    const share = differ / (pa.length / 4);
-    check(drawn > 0.02 * (pa.length / 4), `level ${k}: the model covers ${drawn} pixels`);
+    const { share, drawn, count } = compare(await pixels(a.page), await pixels(b.page));
+    check(drawn > 0.02 * count, `level ${k}: the model covers ${drawn} pixels`);
     check(share < 0.01, `level ${k}: ${(100 * share).toFixed(3)} % of pixels differ from GLTFLoader's`);
     figures.levels.find((l) => l.index === k).pixelsDiffer = share;
     await a.page.screenshot({ path: path.join(outDir, `level-${k}-streamed.png`) });

@@ -4,49 +4,17 @@
 // Writes OUT_DIR/bytes-<share>.png and prints one line a picture: share, records, faces, and
 // the share of the bytes they need.
 //   node tests/web/progressive_pictures.mjs SERVE_PY FILE.glb OUT_DIR SHARE...
-import { spawn } from "node:child_process";
 import { mkdir, readFile } from "node:fs/promises";
-import { createRequire } from "node:module";
 import path from "node:path";
 
-import { ProgressiveDecoder, describeProgressive, readHeader } from "../../web/progressive.js";
+import { launchBrowser, progressiveFile, startServer } from "./harness.mjs";
 
-const require = createRequire(new URL("../../web/package.json", import.meta.url));
-const puppeteer = require("puppeteer-core");
 const [servePy, glb, outDir, ...shares] = process.argv.slice(2);
-const python = process.env.VRS_PYTHON || "python3";
-const chromium = process.env.CHROMIUM || "/usr/bin/chromium";
-
 const file = new Uint8Array(await readFile(glb));
-const header = readHeader(file);
-const layout = describeProgressive(header.json);
-// The records whole in the file's first `bytes` bytes (-1: not even the base).
-function recordsWithin(bytes) {
-  const bin = file.subarray(header.binStart, Math.max(header.binStart, bytes));
-  if (bin.length < layout.recordStart) return -1;
-  const d = new ProgressiveDecoder(layout, file.subarray(header.binStart));
-  d.push(bin.subarray(layout.recordStart));
-  d.apply();
-  return d.applied;
-}
-
+const { recordsWithin, baseBytes } = progressiveFile(file);
 await mkdir(outDir, { recursive: true });
-const server = spawn(python, [servePy, glb, "--port", "0"], { stdio: ["ignore", "pipe", "inherit"] });
-const base = await new Promise((resolve, reject) => {
-  let text = "";
-  server.stdout.on("data", (d) => {
-    text += d;
-    const m = text.match(/at (http:\/\/[^/]+\/)/);
-    if (m) resolve(m[1]);
-  });
-  server.on("exit", (code) => reject(new Error(`server exited (${code})`)));
-});
-const browser = await puppeteer.launch({
-  executablePath: chromium,
-  headless: true,
-  args: ["--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
-         "--ignore-gpu-blocklist", "--window-size=360,360"],
-});
+const { server, base } = await startServer(servePy, glb);
+const browser = await launchBrowser(360, 360);
 let failed = 0;
 try {
   for (const share of shares) {
@@ -69,7 +37,7 @@ try {
       failed++;
     }
     await page.screenshot({ path: path.join(outDir, `bytes-${share}.png`) });
-    const needed = share === "base" ? header.binStart + layout.recordStart : Number(share) * file.length;
+    const needed = share === "base" ? baseBytes : Number(share) * file.length;
     console.log(`${share} ${records} ${state.progressive?.faces} ${(needed / file.length).toFixed(4)}`);
     await page.close();
   }

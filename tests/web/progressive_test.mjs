@@ -13,15 +13,11 @@
 //        [--max-first F] [--stream-only | --decoder-only]
 // --decoder-only: the base drawn and the decoder's speed, not the whole stream (huge meshes,
 // whose every frame SwiftShader draws in seconds).
-import { spawn } from "node:child_process";
 import { mkdir, readFile, writeFile } from "node:fs/promises";
-import { createRequire } from "node:module";
 import path from "node:path";
 
-import { ProgressiveDecoder, describeProgressive, readHeader } from "../../web/progressive.js";
-
-const require = createRequire(new URL("../../web/package.json", import.meta.url));
-const puppeteer = require("puppeteer-core");
+import { compare, launchBrowser, openPage as open, pixels, progressiveFile, startServer }
+  from "./harness.mjs";
 
 const [servePy, glb, outDir, ...rest] = process.argv.slice(2);
 const option = (name, fallback) => {
@@ -32,75 +28,19 @@ const throttle = option("--throttle", 500_000);
 const maxFirst = option("--max-first", 0.02);
 const decoderOnly = rest.includes("--decoder-only");
 const streamOnly = decoderOnly || rest.includes("--stream-only"); // no prefix renders
-const python = process.env.VRS_PYTHON || "python3";
-const chromium = process.env.CHROMIUM || "/usr/bin/chromium";
 let failures = 0;
 const check = (ok, what) => {
   console.log(`${ok ? "ok  " : "FAIL"} ${what}`);
   if (!ok) failures++;
 };
 
-// The records whole in the file's first `bytes` bytes (the base needs its own first).
 const file = new Uint8Array(await readFile(glb));
-const header = readHeader(file);
-const layout = describeProgressive(header.json);
-function recordsWithin(bytes) {
-  const bin = file.subarray(header.binStart, Math.max(header.binStart, bytes));
-  if (bin.length < layout.recordStart) return -1;
-  const d = new ProgressiveDecoder(layout, file.subarray(header.binStart));
-  d.push(bin.subarray(layout.recordStart));
-  d.apply();
-  return d.applied;
-}
+const { layout, recordsWithin } = progressiveFile(file);
 
 await mkdir(outDir, { recursive: true });
-const server = spawn(python, [servePy, glb, "--port", "0", "--throttle", String(throttle)], {
-  stdio: ["ignore", "pipe", "inherit"],
-});
-const base = await new Promise((resolve, reject) => {
-  let text = "";
-  server.stdout.on("data", (d) => {
-    text += d;
-    const m = text.match(/at (http:\/\/[^/]+\/)/);
-    if (m) resolve(m[1]);
-  });
-  server.on("exit", (code) => reject(new Error(`server exited (${code})`)));
-  setTimeout(() => reject(new Error("server did not start")), 20000);
-});
-const name = encodeURIComponent(path.basename(glb));
-const browser = await puppeteer.launch({
-  executablePath: chromium,
-  headless: true,
-  args: ["--no-sandbox", "--use-angle=swiftshader", "--enable-unsafe-swiftshader",
-         "--ignore-gpu-blocklist", "--window-size=480,360"],
-});
-
-async function openPage(query) {
-  const page = await browser.newPage();
-  await page.setViewport({ width: 480, height: 360 });
-  const errors = [];
-  page.on("pageerror", (e) => errors.push(String(e)));
-  await page.goto(`${base}index.html?url=/${name}${query}`);
-  await page.waitForFunction("window.viewer && (window.viewer.done || window.viewer.error)",
-                             { timeout: 300000, polling: 50 });
-  await page.waitForFunction("window.viewer.textureReady", { timeout: 60000 });
-  await new Promise((r) => setTimeout(r, 300));
-  const state = await page.evaluate(() => window.viewer);
-  if (state.error) errors.push(state.error);
-  return { page, state, errors };
-}
-
-async function pixels(page) {
-  return page.evaluate(() => {
-    const c = document.querySelector("#view canvas");
-    const t = document.createElement("canvas");
-    t.width = c.width;
-    t.height = c.height;
-    const g = t.getContext("2d");
-    g.drawImage(c, 0, 0);
-    return Array.from(g.getImageData(0, 0, t.width, t.height).data);
-  });
-}
+const { server, base } = await startServer(servePy, glb, throttle);
+const browser = await launchBrowser(480, 360);
+const openPage = (query) => open(browser, base, glb, query, 480, 360);
 
 const figures = { file: path.basename(glb), throttle, bytes: file.length,
                   insertions: layout.insertions, prefixes: [] };
@@ -163,17 +103,8 @@ try {
     check(a.state.progressive.faces === b.state.progressive.faces,
           `${100 * share} % of the bytes, ${records} records: ${a.state.progressive.faces} faces ` +
           `streamed, ${b.state.progressive.faces} through GLTFLoader`);
-    const pa = await pixels(a.page);
-    const pb = await pixels(b.page);
-    let differ = 0, drawn = 0;
-    for (let i = 0; i < pa.length; i += 4) {
-      const d = Math.max(Math.abs(pa[i] - pb[i]), Math.abs(pa[i + 1] - pb[i + 1]),
-                         Math.abs(pa[i + 2] - pb[i + 2]));
-      if (d > 24) differ++;
-      if (pb[i] !== 0x20 || pb[i + 1] !== 0x24 || pb[i + 2] !== 0x2a) drawn++;
-    }
-    const pixelsShare = differ / (pa.length / 4);
-    check(drawn > 0.02 * (pa.length / 4), `${100 * share} %: the model covers ${drawn} pixels`);
+    const { share: pixelsShare, drawn, count } = compare(await pixels(a.page), await pixels(b.page));
+    check(drawn > 0.02 * count, `${100 * share} %: the model covers ${drawn} pixels`);
     check(pixelsShare < 0.01,
           `${100 * share} %: ${(100 * pixelsShare).toFixed(3)} % of pixels differ from GLTFLoader's`);
     figures.prefixes.push({ share, records, faces: a.state.progressive.faces, pixelsDiffer: pixelsShare });
