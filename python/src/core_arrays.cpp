@@ -199,4 +199,20 @@ std::vector<float> read_floats(const AnyArray& a, size_t rows, size_t columns, c
   return out;
 }
 
+RunInput read_run_input(const AnyArray& vertices, const AnyArray& faces, const AnyArray* seams,
+                        const AnyArray* corner_keys) {
+  RunInput in;
+  in.mesh.positions = read_positions(vertices);
+  const size_t n = in.mesh.vertex_count();
+  in.mesh.triangles = read_indices(faces, n, "triangle", 3);
+  if (seams) in.seams = read_indices(*seams, n, "seam", 2);
+  if (corner_keys) {
+    in.keys = read_indices(*corner_keys, 0xffffffffu, "corner keys of face", 3);
+    if (in.keys.size() != in.mesh.triangles.size())
+      throw nb::value_error("corner_keys must be a (faces, 3) array: one key per face corner");
+    in.has_keys = true;
+  }
+  return in;
+}
+
 } // namespace vrs_py

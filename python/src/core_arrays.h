@@ -1,6 +1,7 @@
-// The numpy side of the core's bindings, shared by core_module.cpp (simplify) and
-// lods_module.cpp (levels of detail): arrays read through their strides, results handed to
-// numpy without a copy, the report as the CLI's JSON keys, the options from keywords.
+// The numpy side of the core's bindings, shared by core_module.cpp (simplify),
+// lods_module.cpp (levels of detail) and progressive_module.cpp: arrays read through their strides,
+// results handed to numpy without a copy, the report as the CLI's JSON keys, the options from
+// keywords.
 #pragma once
 
 #include <cstdint>
@@ -20,6 +21,16 @@ namespace nb = nanobind;
 using AnyArray = nb::ndarray<nb::ro, nb::device::cpu>;
 
 std::vector<float> read_positions(const AnyArray& a);
+
+// A run's input as lods() and progressive() take it: the mesh, seam pairs and corner keys
+// (empty when not given), read and checked.
+struct RunInput {
+  vrs::Mesh mesh;
+  std::vector<uint32_t> seams, keys;
+  bool has_keys = false;
+};
+RunInput read_run_input(const AnyArray& vertices, const AnyArray& faces, const AnyArray* seams,
+                        const AnyArray* corner_keys);
 // (rows, columns) integer indices, each < bound (else a ValueError naming `what` and the row).
 std::vector<uint32_t> read_indices(const AnyArray& a, size_t bound, const char* what,
                                    size_t columns);

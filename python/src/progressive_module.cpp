@@ -28,25 +28,15 @@ nb::tuple progressive(AnyArray vertices, AnyArray faces, double base, const std:
                       std::optional<AnyArray> corner_keys) {
   vrs::Options opt = vrs_py::make_options({"ratio", base}, 0.0, mode, 1, simplify_boundary,
                                           keep_boundary, max_jump, feature_angle);
-  vrs::Mesh mesh;
-  mesh.positions = vrs_py::read_positions(vertices);
-  const size_t n = mesh.vertex_count();
-  mesh.triangles = vrs_py::read_indices(faces, n, "triangle", 3);
-  std::vector<uint32_t> seam_pairs, keys;
-  if (seams) {
-    seam_pairs = vrs_py::read_indices(*seams, n, "seam", 2);
-    opt.constrained_edges = &seam_pairs;
-  }
-  if (corner_keys) {
-    keys = vrs_py::read_indices(*corner_keys, 0xffffffffu, "corner keys of face", 3);
-    if (keys.size() != mesh.triangles.size())
-      throw nb::value_error("corner_keys must be a (faces, 3) array: one key per face corner");
-  }
+  vrs_py::RunInput in = vrs_py::read_run_input(vertices, faces, seams ? &*seams : nullptr,
+                                               corner_keys ? &*corner_keys : nullptr);
+  if (!in.seams.empty()) opt.constrained_edges = &in.seams;
+  const vrs::Mesh& mesh = in.mesh;
   const double diagonal = vrs::bounding_box_diagonal(mesh);
   vrs::ProgressiveMesh p;
   {
     nb::gil_scoped_release release;
-    p = vrs::simplify_progressive(mesh, opt, corner_keys ? &keys : nullptr);
+    p = vrs::simplify_progressive(mesh, opt, in.has_keys ? &in.keys : nullptr);
   }
   if (!p.ok) throw nb::value_error(p.message.c_str());
   const size_t b = p.base_slots.size(), r = p.vertex.size(), w = p.slots.size();
