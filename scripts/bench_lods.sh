@@ -16,11 +16,10 @@ set -euo pipefail
 top=$(cd "$(dirname "$0")/.." && pwd)
 samples=100000
 [ "${1:-}" = --samples ] && samples=$2
-"$top/scripts/setup.sh" >/dev/null
-"$top/scripts/build.sh" >/dev/null
-bin=$top/build/bin/vrsimplify bench=$top/build/bin/vrs_bench
+. "$top/scripts/lib/bench_setup.sh" >/dev/null
+bin=$top/build/bin/vrsimplify
 python=${VRS_CACHE:-/var/cache/vrsimplify}/venv/bin/python
-inputs=$("$top/scripts/lib/bench_inputs.sh" "$bench" "$python")
+"$top/scripts/lib/bench_inputs.sh" "$bench" "$python" >/dev/null
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 ratios="0.5 0.1 0.01"

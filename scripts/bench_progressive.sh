@@ -21,11 +21,10 @@ while [ $# -gt 0 ]; do
     *) echo "usage: scripts/bench_progressive.sh [--samples S] [--only NAME]" >&2; exit 2 ;;
   esac
 done
-"$top/scripts/setup.sh" >/dev/null
-"$top/scripts/build.sh" >/dev/null
-bin=$top/build/bin/vrsimplify bench=$top/build/bin/vrs_bench
+. "$top/scripts/lib/bench_setup.sh" >/dev/null
+bin=$top/build/bin/vrsimplify
 python=${VRS_CACHE:-/var/cache/vrsimplify}/venv/bin/python
-inputs=$("$top/scripts/lib/bench_inputs.sh" "$bench" "$python")
+"$top/scripts/lib/bench_inputs.sh" "$bench" "$python" >/dev/null
 work=$(mktemp -d)
 trap 'rm -rf "$work"' EXIT
 results=$work/results.jsonl

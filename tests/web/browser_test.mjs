@@ -11,7 +11,7 @@
 import { mkdir, writeFile } from "node:fs/promises";
 import path from "node:path";
 
-import { compare, launchBrowser, openPage as open, pixels, startServer } from "./harness.mjs";
+import { checkAgainstLoader, launchBrowser, openPage as open, startServer } from "./harness.mjs";
 
 const [servePy, glb, outDir, ...rest] = process.argv.slice(2);
 const option = (name, fallback) => {
@@ -58,19 +58,11 @@ try {
     const k = level.index;
     const a = await openPage(`&stop=${k}`);
     const b = await openPage(`&reference=${k}`);
-    check(a.errors.length === 0 && b.errors.length === 0,
-          `level ${k}: no page error ${[...a.errors, ...b.errors].join("; ")}`);
     const faces = b.state.levels[0]?.faces;
     check(a.state.levels.at(-1)?.faces === faces,
           `level ${k}: ${a.state.levels.at(-1)?.faces} faces streamed, ${faces} read by GLTFLoader`);
-    const { share, drawn, count } = compare(await pixels(a.page), await pixels(b.page));
-    check(drawn > 0.02 * count, `level ${k}: the model covers ${drawn} pixels`);
-    check(share < 0.01, `level ${k}: ${(100 * share).toFixed(3)} % of pixels differ from GLTFLoader's`);
-    figures.levels.find((l) => l.index === k).pixelsDiffer = share;
-    await a.page.screenshot({ path: path.join(outDir, `level-${k}-streamed.png`) });
-    await b.page.screenshot({ path: path.join(outDir, `level-${k}-gltfloader.png`) });
-    await a.page.close();
-    await b.page.close();
+    figures.levels.find((l) => l.index === k).pixelsDiffer =
+      await checkAgainstLoader(a, b, { label: `level ${k}`, check, outDir, stem: `level-${k}` });
   }
 } finally {
   await browser.close();

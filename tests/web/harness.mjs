@@ -96,3 +96,20 @@ export function progressiveFile(file) {
   };
   return { header, layout, recordsWithin, baseBytes: header.binStart + layout.recordStart };
 }
+
+// The same picture twice — `a` as the page streamed it, `b` as GLTFLoader read the whole file:
+// checks that neither page failed, that the model covers the view and that under 1 % of the
+// pixels differ; writes both screenshots (OUT_DIR/STEM-streamed.png, -gltfloader.png), closes
+// the pages and returns the share of pixels that differ.
+export async function checkAgainstLoader(a, b, { label, check, outDir, stem }) {
+  check(a.errors.length === 0 && b.errors.length === 0,
+        `${label}: no page error ${[...a.errors, ...b.errors].join("; ")}`);
+  const { share, drawn, count } = compare(await pixels(a.page), await pixels(b.page));
+  check(drawn > 0.02 * count, `${label}: the model covers ${drawn} pixels`);
+  check(share < 0.01, `${label}: ${(100 * share).toFixed(3)} % of pixels differ from GLTFLoader's`);
+  await a.page.screenshot({ path: path.join(outDir, `${stem}-streamed.png`) });
+  await b.page.screenshot({ path: path.join(outDir, `${stem}-gltfloader.png`) });
+  await a.page.close();
+  await b.page.close();
+  return share;
+}

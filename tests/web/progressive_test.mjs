@@ -16,7 +16,7 @@
 import { mkdir, readFile, writeFile } from "node:fs/promises";
 import path from "node:path";
 
-import { compare, launchBrowser, openPage as open, pixels, progressiveFile, startServer }
+import { checkAgainstLoader, launchBrowser, openPage as open, progressiveFile, startServer }
   from "./harness.mjs";
 
 const [servePy, glb, outDir, ...rest] = process.argv.slice(2);
@@ -41,6 +41,7 @@ await mkdir(outDir, { recursive: true });
 const { server, base } = await startServer(servePy, glb, throttle);
 const browser = await launchBrowser(480, 360);
 const openPage = (query) => open(browser, base, glb, query, 480, 360);
+const name = encodeURIComponent(path.basename(glb));
 
 const figures = { file: path.basename(glb), throttle, bytes: file.length,
                   insertions: layout.insertions, prefixes: [] };
@@ -98,20 +99,13 @@ try {
     }
     const a = await openPage(`&stop=${records}`);
     const b = await openPage(`&reference=${records}`);
-    check(a.errors.length === 0 && b.errors.length === 0,
-          `${100 * share} %: no page error ${[...a.errors, ...b.errors].join("; ")}`);
     check(a.state.progressive.faces === b.state.progressive.faces,
           `${100 * share} % of the bytes, ${records} records: ${a.state.progressive.faces} faces ` +
           `streamed, ${b.state.progressive.faces} through GLTFLoader`);
-    const { share: pixelsShare, drawn, count } = compare(await pixels(a.page), await pixels(b.page));
-    check(drawn > 0.02 * count, `${100 * share} %: the model covers ${drawn} pixels`);
-    check(pixelsShare < 0.01,
-          `${100 * share} %: ${(100 * pixelsShare).toFixed(3)} % of pixels differ from GLTFLoader's`);
-    figures.prefixes.push({ share, records, faces: a.state.progressive.faces, pixelsDiffer: pixelsShare });
-    await a.page.screenshot({ path: path.join(outDir, `bytes-${100 * share}pct-streamed.png`) });
-    await b.page.screenshot({ path: path.join(outDir, `bytes-${100 * share}pct-gltfloader.png`) });
-    await a.page.close();
-    await b.page.close();
+    const faces = a.state.progressive.faces;
+    const pixelsDiffer = await checkAgainstLoader(a, b, { label: `${100 * share} %`, check, outDir,
+                                                          stem: `bytes-${100 * share}pct` });
+    figures.prefixes.push({ share, records, faces, pixelsDiffer });
   }
 } finally {
   await browser.close();
