@@ -75,12 +75,10 @@ std::string write_progressive_glb(const std::string& path, const float* position
   if (a.compress) return "a progressive .glb is written without EXT_meshopt_compression";
   if (p.base_slots.empty()) return "the base mesh has no faces: glTF needs at least one";
   const size_t slot_count = input_triangles.size() / 3;
-  for (uint32_t c : p.base_corners)
-    if (c >= input_triangles.size() || input_triangles[c] >= vertex_count)
-      return "a corner names a vertex the mesh does not have";
-  for (uint32_t c : p.corners)
-    if (c >= input_triangles.size() || input_triangles[c] >= vertex_count)
-      return "a corner names a vertex the mesh does not have";
+  for (const auto* corners : {&p.base_corners, &p.corners})
+    for (uint32_t c : *corners)
+      if (c >= input_triangles.size() || input_triangles[c] >= vertex_count)
+        return "a corner names a vertex the mesh does not have";
   for (uint32_t s : p.slots)
     if (s >= slot_count) return "a record names a slot the mesh does not have";
   const bool per_corner = a.corner_normals || a.corner_colors || a.corner_uvs;
