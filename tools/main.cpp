@@ -15,7 +15,6 @@
 
 #include "exact_vertices.h"
 #include "glb_output.h"
-#include "json_text.h"
 #include "mesh_io.h"
 #include "progress_bar.h"
 #include "python_module.h"
@@ -146,38 +145,6 @@ bool parse_count(const char* s, size_t& out) {
   return *end == '\0';
 }
 
-// The report's keys are the numpy API's and pymeshlab's (docs/report.md).
-void print_json(const vrs::Report& r, double seconds_simplify, double seconds_total, double diag,
-                bool bounded) {
-  std::printf("{\"ok\":%s,\"input_vertices\":%zu,\"input_faces\":%zu,\"output_vertices\":%zu,"
-              "\"output_faces\":%zu,\"removed\":%zu,\"seconds_simplify\":%.6f,"
-              "\"seconds_total\":%.6f,\"rejected\":{",
-              r.ok ? "true" : "false", r.input_vertices, r.input_faces, r.vertices, r.faces,
-              r.removed, seconds_simplify, seconds_total);
-  for (int i = 0; i < vrs::RejectCount; ++i)
-    std::printf("%s\"%s\":%zu", i ? "," : "", vrs::reject_name(vrs::Reject(i)), r.rejected[i]);
-  std::printf(
-      "},\"rejected_total\":%zu,\"stop_reason\":\"%s\",\"target_reached\":%s,"
-      "\"max_removed_factor\":%.9g,\"kept\":{\"boundary\":%zu,\"nonmanifold\":%zu,"
-      "\"locked\":%zu,\"high_valence\":%zu,\"constrained\":%zu},"
-      "\"constrained_edges\":%zu,\"input_issues\":{\"degenerate_faces\":%zu,"
-      "\"nonfinite_vertices\":%zu,\"unreferenced_vertices\":%zu,"
-      "\"reoriented_faces\":%zu,\"welded_vertices\":%zu},"
-      "\"relaxed_removals\":%zu,\"slid\":%zu,\"boundary_simplified\":%s,\"stop_detail\":\"%s\","
-      "\"message\":\"%s\",\"target_faces\":%zu,\"target_vertices\":%zu",
-      r.rejected_total(), vrs::stop_reason_name(r.stop), r.target_reached ? "true" : "false",
-      r.max_removed_factor, r.kept_boundary, r.kept_nonmanifold, r.kept_locked, r.kept_high_valence,
-      r.kept_constrained, r.constrained_edges, r.dropped_degenerate_faces, r.nonfinite_vertices,
-      r.unreferenced_vertices, r.reoriented_faces, r.welded_vertices, r.relaxed_removals, r.slid,
-      r.boundary_simplified ? "true" : "false", vrs_common::json_text(r.stop_detail).c_str(),
-      vrs_common::json_text(r.message).c_str(), r.target_faces, r.target_vertices);
-  // A bound that was not tracked is absent, never 0 (which would read "no error at all").
-  if (bounded)
-    std::printf(",\"error_bound\":%.9g,\"error_bound_percent\":%.9g", r.error_bound,
-                diag > 0 ? 100.0 * r.error_bound / diag : 0.0);
-  std::printf("}\n");
-}
-
 void print_text(const vrs::Report& r, double seconds_simplify, double seconds_total, double diag,
                 bool bounded) {
   std::printf("input:   %zu vertices, %zu faces\n", r.input_vertices, r.input_faces);
@@ -191,8 +158,10 @@ void print_text(const vrs::Report& r, double seconds_simplify, double seconds_to
   std::printf("rejected removals: %zu (", r.rejected_total());
   for (int i = 0; i < vrs::RejectCount; ++i)
     std::printf("%s%s %zu", i ? ", " : "", vrs::reject_name(vrs::Reject(i)), r.rejected[i]);
-  std::printf(")\nstopped: %s, target %s", vrs::stop_reason_name(r.stop),
-              r.target_reached ? "reached" : "NOT reached");
+  std::printf(")\nstopped: %s", vrs::stop_reason_name(r.stop));
+  if (r.stop_cause != vrs::StopCause::None)
+    std::printf(" (cause: %s)", vrs::stop_cause_name(r.stop_cause));
+  std::printf(", target %s", r.target_reached ? "reached" : "NOT reached");
   if (!r.target_reached && r.target_faces)
     std::printf(" (%zu faces asked, %zu kept)", r.target_faces, r.faces);
   std::printf("\n");
@@ -584,9 +553,15 @@ int main(int argc, char** argv) {
     }
   }
   const double seconds_total = std::chrono::duration<double>(clock::now() - t0).count();
-  if (json)
-    print_json(report, seconds_simplify, seconds_total, diag, opt.max_error > 0);
-  else
+  if (json) {
+    vrs::ReportContext context;
+    context.seconds_simplify = seconds_simplify;
+    context.seconds_total = seconds_total;
+    context.diagonal = diag;
+    context.bounded = opt.max_error > 0;
+    std::printf("%s\n", vrs::report_json(report, context).c_str());
+  } else {
     print_text(report, seconds_simplify, seconds_total, diag, opt.max_error > 0);
+  }
   return 0;
 }

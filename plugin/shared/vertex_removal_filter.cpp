@@ -45,9 +45,10 @@ QString filter_info() {
 
 namespace {
 
-// The last application's stop detail on this thread: pymeshlab's result map takes no strings,
-// so vrsimplify.pymeshlab reads it through vrs_filter_last_stop_detail().
-thread_local std::string last_stop_detail;
+// The last run's report on this thread, as the core writes it (JSON): pymeshlab's result map
+// takes no strings, so vrsimplify.pymeshlab reads the stop's detail and cause through
+// vrs_filter_last_report().
+thread_local std::string last_report;
 
 // Label of LOD layer `level` made from `base`: MeshLab takes what follows a '.' for a format.
 QString lod_label(const QString& base, int level) {
@@ -236,7 +237,11 @@ QString Application::simplify_layer(MeshModel& m, const FilterSettings& s, int l
   totals_.seconds += seconds;
   totals_.target_reached = totals_.target_reached && r.target_reached;
   totals_.target_faces = r.target_faces;
-  last_stop_detail = r.stop_detail;
+  vrs::ReportContext context;
+  context.seconds_simplify = seconds;
+  context.diagonal = totals_.diagonal;
+  context.bounded = o.max_error > 0;
+  last_report = vrs::report_json(r, context);
   totals_.stop = r.stop;
   totals_.boundary_simplified = totals_.boundary_simplified || r.boundary_simplified;
 
@@ -268,8 +273,9 @@ QString Application::simplify_layer(MeshModel& m, const FilterSettings& s, int l
   if (r.target_reached) {
     log(QString("Stopped: %1").arg(vrs::stop_reason_name(r.stop)));
   } else {
-    warn(QString("Target not reached (%1): %2")
+    warn(QString("Target not reached (%1, cause: %2): %3")
              .arg(vrs::stop_reason_name(r.stop))
+             .arg(vrs::stop_cause_name(r.stop_cause))
              .arg(r.stop_detail.empty() ? QString("stopped before the target")
                                         : QString::fromStdString(r.stop_detail)));
   }
@@ -295,7 +301,7 @@ QString Application::simplify_layer(MeshModel& m, const FilterSettings& s, int l
 } // namespace
 
 Outcome apply_vertex_removal(MeshDocument& md, const RichParameterList& par, const Host& host) {
-  last_stop_detail.clear();
+  last_report.clear();
   // Anything thrown here would abort the host (the GUI with the user's unsaved work, or the
   // Python interpreter); the rollback has already restored the document when we get here.
   Outcome out;
@@ -314,6 +320,6 @@ Outcome apply_vertex_removal(MeshDocument& md, const RichParameterList& par, con
 
 } // namespace vrs_plugin
 
-extern "C" __attribute__((visibility("default"))) const char* vrs_filter_last_stop_detail() {
-  return vrs_plugin::last_stop_detail.c_str();
+extern "C" __attribute__((visibility("default"))) const char* vrs_filter_last_report() {
+  return vrs_plugin::last_report.c_str();
 }

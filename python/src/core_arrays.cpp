@@ -81,48 +81,17 @@ std::vector<int64_t> signed_indices(const std::vector<uint32_t>& v) {
   return out;
 }
 
-// The report, with the CLI's JSON keys (docs/report.md is the table of them all).
+// The report as the core writes it for every front end (docs/report.md), read back as a dict.
 nb::dict report_dict(const vrs::Report& r, bool bounded, double seconds, double diagonal) {
-  nb::dict d, rejected, kept, input;
-  d["ok"] = r.ok;
-  d["stop_reason"] = vrs::stop_reason_name(r.stop);
-  d["target_reached"] = r.target_reached;
-  d["stop_detail"] = r.stop_detail;
-  d["message"] = r.message;
-  d["input_vertices"] = r.input_vertices;
-  d["input_faces"] = r.input_faces;
-  d["output_vertices"] = r.vertices;
-  d["output_faces"] = r.faces;
-  d["target_faces"] = r.target_faces;
-  d["target_vertices"] = r.target_vertices;
-  d["removed"] = r.removed;
-  for (int i = 0; i < vrs::RejectCount; ++i)
-    rejected[vrs::reject_name(vrs::Reject(i))] = r.rejected[i];
-  d["rejected"] = rejected;
-  d["rejected_total"] = r.rejected_total();
-  kept["boundary"] = r.kept_boundary;
-  kept["nonmanifold"] = r.kept_nonmanifold;
-  kept["locked"] = r.kept_locked;
-  kept["high_valence"] = r.kept_high_valence;
-  kept["constrained"] = r.kept_constrained;
-  d["kept"] = kept;
-  d["constrained_edges"] = r.constrained_edges;
-  input["degenerate_faces"] = r.dropped_degenerate_faces;
-  input["nonfinite_vertices"] = r.nonfinite_vertices;
-  input["unreferenced_vertices"] = r.unreferenced_vertices;
-  input["reoriented_faces"] = r.reoriented_faces;
-  input["welded_vertices"] = r.welded_vertices;
-  d["input_issues"] = input;
-  d["relaxed_removals"] = r.relaxed_removals;
-  d["slid"] = r.slid;
-  d["boundary_simplified"] = r.boundary_simplified;
-  d["max_removed_factor"] = r.max_removed_factor;
-  // Not tracked: None, never 0.0 (which would read "no error at all").
-  d["error_bound"] = bounded ? nb::object(nb::float_(r.error_bound)) : nb::none();
-  d["error_bound_percent"] =
-      bounded ? nb::object(nb::float_(diagonal > 0 ? 100.0 * r.error_bound / diagonal : 0.0))
-              : nb::none();
-  d["seconds_simplify"] = seconds;
+  vrs::ReportContext context;
+  context.seconds_simplify = seconds;
+  context.diagonal = diagonal;
+  context.bounded = bounded;
+  nb::dict d =
+      nb::cast<nb::dict>(nb::module_::import_("json").attr("loads")(vrs::report_json(r, context)));
+  // Not tracked: None in Python (typed keys are always there), never 0.0.
+  d.attr("setdefault")("error_bound", nb::none());
+  d.attr("setdefault")("error_bound_percent", nb::none());
   return d;
 }
 

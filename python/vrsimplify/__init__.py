@@ -73,6 +73,12 @@ class Report(TypedDict):
     stop_reason : str
         "target_reached", "max_factor", "last_interval", "no_candidates" (stopped short: see
         ``stop_detail``), "cancelled" (the progress callback said stop) or "error_bound".
+    stop_cause : str
+        When a count target was not reached, what kept the run from it, for a program to act
+        on: "price_jump" (``max_jump``), "error_bound", "vetoes" (every removal left would fold
+        or break the topology: the input's floor), or what keeps most of the remaining vertices
+        ("boundary", "constrained", "split_seam", "locked", "nonfinite", "nonmanifold",
+        "high_valence", "no_plane"); "none" when the run did not stop short.
     target_reached : bool
         False when the run stopped short (a ``TargetNotReachedWarning`` says so too).
     stop_detail : str
@@ -119,6 +125,8 @@ class Report(TypedDict):
     stop_reason: str
     """"target_reached", "max_factor", "last_interval", "no_candidates", "cancelled" or
     "error_bound"."""
+    stop_cause: str
+    """What kept a count target from being reached ("none" when it was): see above."""
     target_reached: bool
     stop_detail: str
     """When the target was not reached: what keeps the remaining vertices, in words."""

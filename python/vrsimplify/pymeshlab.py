@@ -3,8 +3,8 @@
     ms.meshing_decimation_vertex_removal(targetfacenum=1000)
     ms.apply_filter("meshing_decimation_vertex_removal", targetfacenum=1000)
 
-Both give the same dict: the filter's numbers, ``stop_reason`` as text and ``stop_detail``
-(what the command line's ``why:`` line says), as the numpy API's report. A run that stops short
+Both give the same dict: the filter's numbers, ``stop_reason`` as text, ``stop_cause`` and
+``stop_detail`` (what the command line's ``why:`` line says), as the numpy API's report. A run that stops short
 of its target warns (``vrsimplify.TargetNotReachedWarning``), as ``vrsimplify.simplify`` does.
 
 The plugin the wheel carries is built for pymeshlab 2025.7 (MeshLab 2025.07, double scalars);
@@ -15,6 +15,7 @@ from __future__ import annotations
 import ctypes
 import functools
 import importlib.metadata
+import json
 import pathlib
 
 import pymeshlab
@@ -38,25 +39,29 @@ def _load() -> None:
 _load()
 
 
-def _stop_detail() -> str:
-    """The plugin's last stop detail (pymeshlab's result takes numbers only). The plugin is
-    loaded already: dlopen of its path hands back the same library."""
+def _last_report() -> dict:
+    """The plugin's last report as the core writes it (pymeshlab's result takes numbers only).
+    The plugin is loaded already: dlopen of its path hands back the same library."""
     try:
-        read = ctypes.CDLL(str(PLUGIN)).vrs_filter_last_stop_detail
+        read = ctypes.CDLL(str(PLUGIN)).vrs_filter_last_report
     except (OSError, AttributeError):
-        return ""
+        return {}
     read.restype = ctypes.c_char_p
-    return (read() or b"").decode("utf-8", "replace")
+    text = read() or b""
+    return json.loads(text) if text else {}
 
 
 def _finish(result) -> dict:
-    """pymeshlab's numbers as the numpy API's report: the stop reason as text, stop_detail."""
+    """pymeshlab's numbers as the numpy API's report: the stop reason as text, its detail and
+    cause."""
     from . import _core, _warn_if_short
 
     result = dict(result)
     if isinstance(result.get("stop_reason"), int):
         result["stop_reason"] = _core.stop_reason_name(result["stop_reason"])
-    result["stop_detail"] = _stop_detail()
+    last = _last_report()
+    result["stop_detail"] = last.get("stop_detail", "")
+    result["stop_cause"] = last.get("stop_cause", "none")
     _warn_if_short(result, stacklevel=4)
     return result
 

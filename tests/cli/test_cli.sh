@@ -64,7 +64,7 @@ n_out=$(wc -l <"$out/out.vtx")
 # 5. The JSON report has every field the benchmark and the README read.
 for field in input_vertices input_faces output_vertices output_faces seconds_simplify seconds_total \
   rejected_total stop_reason target_reached fold edge_exists flip degenerate triangle_exists \
-  fold_over relaxed_removals slid stop_detail; do
+  fold_over relaxed_removals slid stop_detail stop_cause; do
   grep -q "\"$field\"" "$out/f10.ply.json" && ok || fail "json lacks $field"
 done
 

@@ -79,6 +79,7 @@ TEST(ErrorBound, TooSmallABoundKeepsTheTent) {
   EXPECT_TRUE(r.target_reached);
   EXPECT_GT(r.rejected[RejectBound], 0u);
   EXPECT_NE(r.stop_detail.find("error_bound"), std::string::npos) << r.stop_detail;
+  EXPECT_EQ(r.stop_cause, StopCause::ErrorBound);
 }
 
 TEST(ErrorBound, RealMeshesStayWithinTheBoundTheyCertify) {

@@ -66,11 +66,11 @@ TEST_P(RealMesh, KeepsTheInvariants) {
     EXPECT_TRUE(r.target_reached) << m.face_count() << " faces for " << target;
   } else if (before.boundary == 0) {
     if (double(m.face_count()) > std::max(1.05 * double(target), double(target + 8))) {
-      EXPECT_TRUE(vrs_test::stops_faithfully(r.stop_detail)) << r.stop_detail;
+      EXPECT_TRUE(vrs_test::stops_faithfully(r)) << r.stop_detail;
     }
   } else if (!r.target_reached) {
     EXPECT_TRUE(r.stop_detail.find("boundary simplification is off") != std::string::npos ||
-                vrs_test::stops_faithfully(r.stop_detail))
+                vrs_test::stops_faithfully(r))
         << r.stop_detail;
   }
   RecordProperty("faces", int(m.face_count()));
@@ -118,7 +118,7 @@ TEST(Fill, BestReachesWhatTheProjectionAloneCannot) {
   const Mesh in = vrs_test::read_off(path);
   const size_t target = size_t(std::llround(0.01 * double(in.face_count())));
   size_t faces[2];
-  std::string why;
+  Report best;
   for (Fill fill : {Fill::Projection, Fill::Best}) {
     Mesh m = in;
     Options o;
@@ -128,12 +128,12 @@ TEST(Fill, BestReachesWhatTheProjectionAloneCannot) {
     ASSERT_TRUE(r.ok);
     EXPECT_EQ(vrs_test::check_run(in, m, o, r), "");
     faces[fill == Fill::Best] = m.face_count();
-    why = r.stop_detail;
+    best = r;
   }
   EXPECT_GT(double(faces[0]), 2.0 * double(target)) << "projection alone";
   EXPECT_LT(2 * (faces[1] - target), faces[0] - target) << "best";
   if (faces[1] > target + 2) {
-    EXPECT_TRUE(vrs_test::stops_faithfully(why)) << why;
+    EXPECT_TRUE(vrs_test::stops_faithfully(best)) << best.stop_detail;
   }
 }
 
@@ -162,7 +162,7 @@ TEST(Targets, ClosedMeshesReachTheTargetOrStopWhereOnlyFoldsAreLeft) {
     // Reached, or stopped short where every filling left would fold over the input or change
     // the surface abruptly (never folded to get there: check_run below).
     if (double(m.face_count()) > std::max(1.05 * target, target + 2)) {
-      EXPECT_TRUE(vrs_test::stops_faithfully(r.stop_detail))
+      EXPECT_TRUE(vrs_test::stops_faithfully(r))
           << name << " at " << ratio << ": " << r.stop_detail;
     }
     EXPECT_EQ(vrs_test::check_run(in, m, o, r), "") << name << " at " << ratio;

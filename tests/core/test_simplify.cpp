@@ -89,6 +89,7 @@ TEST(Simplify, TetrahedronCannotLoseAVertex) {
     EXPECT_EQ(r.rejected[p == Priority::Factor ? RejectTriangle : RejectFlip], 12u);
     EXPECT_EQ(r.stop_detail,
               "remaining vertices: 4 refused by the vetoes (" + std::string(why) + " 4)");
+    EXPECT_EQ(r.stop_cause, StopCause::Vetoes);
   }
 }
 
@@ -196,6 +197,7 @@ TEST(Simplify, StopsShortRatherThanCutTheOutline) {
         << r.stop_detail;
     // The option named as users write it (Python's max_jump, the command line's --max-jump).
     EXPECT_NE(r.stop_detail.find("max_jump, --max-jump: 10"), std::string::npos) << r.stop_detail;
+    EXPECT_EQ(r.stop_cause, StopCause::PriceJump);
     EXPECT_EQ(r.target_faces, 0u);
     // Lazy, the first jump comes with nothing cheap left; eager prices reach it with three
     // straight outline vertices still to take once eased (the outline stays whole: the area).

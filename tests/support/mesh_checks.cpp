@@ -703,9 +703,9 @@ std::string check_rerun(const vrs::Mesh& in, const vrs::Options& o, const vrs::M
   return {};
 }
 
-bool stops_faithfully(const std::string& stop_detail) {
-  return stop_detail.find("would fold") != std::string::npos ||
-         stop_detail.find("would change abruptly") != std::string::npos;
+bool stops_faithfully(const vrs::Report& r) {
+  return r.stop_cause == vrs::StopCause::PriceJump ||
+         r.stop_detail.find("would fold") != std::string::npos;
 }
 
 std::map<std::array<float, 6>, int> edges_by_position(const vrs::Mesh& m) {

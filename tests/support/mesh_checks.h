@@ -74,10 +74,10 @@ std::string check_corner_sources(const vrs::Mesh& in, const vrs::Mesh& out, cons
 std::string check_run(const vrs::Mesh& in, const vrs::Mesh& out, const vrs::Options& o,
                       const vrs::Report& r);
 
-// Whether a run's stop_detail gives one of the faithful reasons to stop short of a count
-// target: every filling left would fold the surface over, or the next removal would change the
-// surface abruptly (a price jump).
-bool stops_faithfully(const std::string& stop_detail);
+// Whether a run stopped short of a count target for one of the faithful reasons: every filling
+// left would fold the surface over, or the next removal would change the surface abruptly (a
+// price jump).
+bool stops_faithfully(const vrs::Report& r);
 
 // Determinism: simplifying `in` with `o` again, on another thread count (1 or 2), must give
 // `first` bit for bit and the same stop reason and removals as `first_report`. "" when so.

@@ -227,6 +227,26 @@ enum class StopReason : uint8_t {
 };
 const char* stop_reason_name(StopReason r);
 
+// What kept the run from its target (Report::stop_cause), for a program to act on: the price
+// jump, the error bound, or else what keeps most of the vertices that remain. Report::stop_detail
+// says the same in words, with every group's count.
+enum class StopCause : uint8_t {
+  None,        // nothing left stopped the run: its target was met (or it was cancelled)
+  PriceJump,   // the cheapest removal left would change the surface abruptly (max_price_jump)
+  ErrorBound,  // with Options::max_error: the bound stopped it (every removal left breaks it)
+  Vetoes,      // every removal left folds, duplicates an edge or a face, or makes a sliver:
+               // the floor of the input's topology (a genus, separate pieces) or its shape
+  Boundary,    // on a boundary that is kept (simplify_boundary off), or outline corners
+  Constrained, // where seams or creases end, meet or cross
+  SplitSeam,   // on a seam of split vertices kept apart (split_vertices weld lifts it)
+  Locked,      // locked by the caller
+  NonFinite,   // a NaN or infinite coordinate, or next to one
+  NonManifold, // non-manifold or inconsistently oriented neighbourhoods
+  HighValence, // more neighbours than max_valence
+  NoPlane,     // no usable plane (a degenerate neighbourhood)
+};
+const char* stop_cause_name(StopCause c);
+
 struct Report {
   bool ok = false;     // false: invalid input or options, the mesh is unchanged
   std::string message; // the error, or warnings about the input (empty if none)
@@ -281,6 +301,7 @@ struct Report {
   // vertices, e.g. "remaining vertices: 64 on the boundary, kept (boundary simplification is
   // off); 2 refused by the vetoes (fold 1, edge_exists 1)".
   std::string stop_detail;
+  StopCause stop_cause = StopCause::None;
 
   double max_removed_factor = 0.0; // largest priority (factor or local error) of a removed vertex
   // With Options::max_error: the certified bound of the symmetric Hausdorff distance between
@@ -304,6 +325,19 @@ struct Report {
 };
 
 constexpr uint32_t kRemoved = 0xffffffffu;
+
+// What a front end knows of a run beside its report, for report_json.
+struct ReportContext {
+  double seconds_simplify = 0; // the run's wall time as the caller measured it
+  double seconds_total = -1;   // with reading and writing; < 0: left out
+  double diagonal = 0;         // the input's bounding-box diagonal: error_bound_percent
+  bool bounded = false;        // an error bound was tracked (Options::max_error > 0)
+};
+
+// The report as one JSON object, with the keys every front end gives (docs/report.md): the
+// command line's --json, the numpy API's dict, pymeshlab's stop detail and cause. A bound that
+// was not tracked is left out, never written as 0 (which would read "no error at all").
+std::string report_json(const Report& report, const ReportContext& context);
 
 // Simplifies `mesh` in place: removed vertices are compacted away (kept vertices keep their
 // relative order) and triangles rewritten. On invalid input (report.ok == false) the mesh is

@@ -29,6 +29,24 @@ const char* stop_reason_name(StopReason r) {
   return "unknown";
 }
 
+const char* stop_cause_name(StopCause c) {
+  switch (c) {
+  case StopCause::None: return "none";
+  case StopCause::PriceJump: return "price_jump";
+  case StopCause::ErrorBound: return "error_bound";
+  case StopCause::Vetoes: return "vetoes";
+  case StopCause::Boundary: return "boundary";
+  case StopCause::Constrained: return "constrained";
+  case StopCause::SplitSeam: return "split_seam";
+  case StopCause::Locked: return "locked";
+  case StopCause::NonFinite: return "nonfinite";
+  case StopCause::NonManifold: return "nonmanifold";
+  case StopCause::HighValence: return "high_valence";
+  case StopCause::NoPlane: return "no_plane";
+  }
+  return "unknown";
+}
+
 size_t Report::rejected_total() const {
   size_t n = 0;
   for (size_t r : rejected)

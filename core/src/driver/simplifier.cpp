@@ -209,8 +209,7 @@ Report simplify_recorded(Mesh& mesh, const Options& options, RemovalRecord* reco
     BucketQueue q;
     s.run(q);
   }
-  if (rep.stop == StopReason::NoCandidates || rep.stop == StopReason::ErrorBound)
-    rep.stop_detail = s.explain_stop();
+  if (rep.stop == StopReason::NoCandidates || rep.stop == StopReason::ErrorBound) s.explain_stop();
   if (rep.stop != StopReason::Cancelled) s.slide();
   if (record) s.standing_faces(record->base_slots, record->base_corners);
   s.compact();

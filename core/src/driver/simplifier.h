@@ -14,6 +14,7 @@
 #include "base/workers.h"
 #include "driver/parts.h"
 #include "driver/scheduler.h"
+#include "driver/stop_explanation.h"
 #include "driver/vertex_flags.h"
 #include "evaluate/carried_points.h"
 #include "evaluate/evaluation.h"
@@ -97,8 +98,10 @@ class Simplifier {
   std::vector<uint32_t> slide_corner_;
   double parallel_seconds() const { return workers_.parallel_seconds(); }
   double span_seconds(int threads) const { return workers_.span_seconds(threads); }
-  // Why the remaining vertices stay, when the target was not met (Report::stop_detail).
-  std::string explain_stop() const;                           // stop_explanation.cpp
+  // Why the remaining vertices stay, when the target was not met: Report::stop_detail and
+  // stop_cause (stop_explanation.cpp).
+  void explain_stop();
+  Remaining count_remaining() const;
   bool next_to_nonfinite(uint32_t v, const Ring& ring) const; // stop_explanation.cpp
 
  private:

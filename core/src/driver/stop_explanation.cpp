@@ -56,19 +56,7 @@ bool Simplifier::next_to_nonfinite(uint32_t v, const Ring& ring) const {
   return false;
 }
 
-std::string Simplifier::explain_stop() const {
-  if (jump_price_ > 0) {
-    char why[512];
-    std::snprintf(why, sizeof why,
-                  "stopped short of the target: the cheapest removal left costs %.3g, %.0f times "
-                  "the dearest made %s (%.3g); the surface would change abruptly (a part "
-                  "dropped, a tunnel pressed flat, a thin wall crossed) rather than lose detail "
-                  "(max_jump, --max-jump: %g%s; 0 reaches the target at any cost)",
-                  jump_price_, jump_price_ / std::max(jump_from_, jump_floor_),
-                  eased() ? "before the vetoes were eased" : "so far", jump_from_,
-                  opt_.max_price_jump, eased() ? ", half of it once eased" : "");
-    return why;
-  }
+Remaining Simplifier::count_remaining() const {
   Remaining r;
   Ring ring;
   std::array<int, 2> seam;
@@ -96,7 +84,47 @@ std::string Simplifier::explain_stop() const {
   }
   if (opt_.split_vertices == SplitVertices::Seam) r.split_seam_edges = welding_.seams.size() / 2;
   r.constrained_edges = rep_.constrained_edges;
-  return explain_remaining(r, simplify_boundary_, last_resort_);
+  return r;
+}
+
+StopCause main_cause(const Remaining& r) {
+  size_t refused = 0;
+  for (size_t n : r.refused)
+    refused += n;
+  // In the order the words list them: the first of the largest groups names the cause.
+  const std::pair<size_t, StopCause> groups[] = {{r.boundary + r.corners, StopCause::Boundary},
+                                                 {r.constrained, StopCause::Constrained},
+                                                 {r.locked, StopCause::Locked},
+                                                 {r.nonfinite, StopCause::NonFinite},
+                                                 {r.split_seam, StopCause::SplitSeam},
+                                                 {r.nonmanifold, StopCause::NonManifold},
+                                                 {r.high_valence, StopCause::HighValence},
+                                                 {refused, StopCause::Vetoes},
+                                                 {r.untried, StopCause::NoPlane}};
+  std::pair<size_t, StopCause> most{0, StopCause::None};
+  for (const auto& g : groups)
+    if (g.first > most.first) most = g;
+  return most.second;
+}
+
+void Simplifier::explain_stop() {
+  if (jump_price_ > 0) {
+    char why[512];
+    std::snprintf(why, sizeof why,
+                  "stopped short of the target: the cheapest removal left costs %.3g, %.0f times "
+                  "the dearest made %s (%.3g); the surface would change abruptly (a part "
+                  "dropped, a tunnel pressed flat, a thin wall crossed) rather than lose detail "
+                  "(max_jump, --max-jump: %g%s; 0 reaches the target at any cost)",
+                  jump_price_, jump_price_ / std::max(jump_from_, jump_floor_),
+                  eased() ? "before the vetoes were eased" : "so far", jump_from_,
+                  opt_.max_price_jump, eased() ? ", half of it once eased" : "");
+    rep_.stop_detail = why;
+    rep_.stop_cause = StopCause::PriceJump;
+    return;
+  }
+  const Remaining r = count_remaining();
+  rep_.stop_detail = explain_remaining(r, simplify_boundary_, last_resort_);
+  rep_.stop_cause = rep_.stop == StopReason::ErrorBound ? StopCause::ErrorBound : main_cause(r);
 }
 
 } // namespace vrs

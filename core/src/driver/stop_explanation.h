@@ -1,4 +1,5 @@
-// Why vertices remain when a run stops short of its target (Report::stop_detail), in words.
+// Why vertices remain when a run stops short of its target: in words (Report::stop_detail)
+// and as a cause (Report::stop_cause).
 #pragma once
 
 #include <array>
@@ -30,5 +31,8 @@ struct Remaining {
 // `last_resort`: the run went through it (then fold-over refusals are said to be what stopped
 // it).
 std::string explain_remaining(const Remaining& r, bool simplify_boundary, bool last_resort);
+
+// The group that keeps most of the remaining vertices (the first listed of equals).
+StopCause main_cause(const Remaining& r);
 
 } // namespace vrs
