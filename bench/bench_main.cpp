@@ -89,23 +89,23 @@ bool run_method(const std::string& method, const vrs::Mesh& in, size_t target,
     while (std::getline(parts, p, '-')) {
       if (p.empty()) continue;
       if (p == "factor")
-        o.priority = vrs::Priority::Factor;
+        o.tuning.priority = vrs::Priority::Factor;
       else if (p == "local")
-        o.priority = vrs::Priority::LocalError;
+        o.tuning.priority = vrs::Priority::LocalError;
       else if (p == "linear")
-        o.mapping = vrs::IntervalMapping::Linear;
+        o.tuning.mapping = vrs::IntervalMapping::Linear;
       else if (p == "log")
-        o.mapping = vrs::IntervalMapping::Logarithmic;
+        o.tuning.mapping = vrs::IntervalMapping::Logarithmic;
       else if (p == "projection")
-        o.fill = vrs::Fill::Projection;
+        o.tuning.fill = vrs::Fill::Projection;
       else if (p == "boundary")
         o.simplify_boundary = true;
       else if (p.size() > 1 && p[0] == 't' && std::isdigit(static_cast<unsigned char>(p[1])))
         o.threads = std::atoi(p.c_str() + 1);
       else if (p == "eager")
-        o.lazy_reevaluation = false;
+        o.tuning.lazy_reevaluation = false;
       else if (p == "lazy") // lazy whatever the size (the default is eager on small meshes)
-        o.lazy_from_faces = 0;
+        o.tuning.lazy_from_faces = 0;
       else if (p == "bound") // track the certified error bound, no limit
         o.max_error = std::numeric_limits<double>::infinity();
       else if (p.rfind("fa", 0) == 0 && p.size() > 2 &&
@@ -114,11 +114,11 @@ bool run_method(const std::string& method, const vrs::Mesh& in, size_t target,
       else if (p == "norelax")                          // stop short instead of the last resort
         o.relax_to_reach_target = false;
       else if (p == "input")
-        o.against_input = true;
+        o.tuning.against_input = true;
       else if (p == "noinput")
-        o.against_input = false;
+        o.tuning.against_input = false;
       else if (p == "heap")
-        o.queue = vrs::QueueKind::Heap;
+        o.tuning.queue = vrs::QueueKind::Heap;
       else if (p == "noslide") // the run's faces, no slide after it
         o.slide = false;
       else if (p == "seam")
@@ -126,13 +126,13 @@ bool run_method(const std::string& method, const vrs::Mesh& in, size_t target,
       else if (p == "keep")
         o.split_vertices = vrs::SplitVertices::Keep;
       else if (p == "whole") // one queue from the start, no parts
-        o.part_vertices = 0;
+        o.tuning.part_vertices = 0;
       else if (p.rfind("part", 0) == 0 && p.size() > 4) // e.g. ours-part1024
-        o.part_vertices = std::atoi(p.c_str() + 4);
+        o.tuning.part_vertices = std::atoi(p.c_str() + 4);
       else if (p.rfind("jump", 0) == 0 && p.size() > 4) // e.g. ours-jump0: the target at any cost
         o.max_price_jump = std::atof(p.c_str() + 4);
       else if (p.rfind("int", 0) == 0 && p.size() > 3)
-        o.intervals = std::atoi(p.c_str() + 3);
+        o.tuning.intervals = std::atoi(p.c_str() + 3);
       else
         return false;
     }
@@ -245,7 +245,7 @@ int serial(int argc, char** argv) {
   vrs::Options o;
   o.target.ratio = std::atof(argv[3]);
   o.threads = argc > 4 ? std::atoi(argv[4]) : 1;
-  if (argc > 5) o.part_vertices = std::atoi(argv[5]); // another part size than the default
+  if (argc > 5) o.tuning.part_vertices = std::atoi(argv[5]); // another part size than the default
   const vrs::Report r = vrs::simplify(m, o);
   if (!r.ok) {
     std::fprintf(stderr, "vrs_bench: %s\n", r.message.c_str());

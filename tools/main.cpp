@@ -339,16 +339,16 @@ int main(int argc, char** argv) {
       if (!(v = value()) || !vrs::parse_mode(v, opt.mode))
         return usage_error("--mode must be surface, terrain or planar");
     } else if (a == "--queue") {
-      if (!(v = value()) || !vrs::parse_queue(v, opt.queue))
+      if (!(v = value()) || !vrs::parse_queue(v, opt.tuning.queue))
         return usage_error("--queue must be intervals or heap");
     } else if (a == "--fill") {
-      if (!(v = value()) || !vrs::parse_fill(v, opt.fill))
+      if (!(v = value()) || !vrs::parse_fill(v, opt.tuning.fill))
         return usage_error("--fill must be best or projection");
     } else if (a == "--priority") {
-      if (!(v = value()) || !vrs::parse_priority(v, opt.priority))
+      if (!(v = value()) || !vrs::parse_priority(v, opt.tuning.priority))
         return usage_error("--priority must be factor or local-error");
     } else if (a == "--mapping") {
-      if (!(v = value()) || !vrs::parse_mapping(v, opt.mapping))
+      if (!(v = value()) || !vrs::parse_mapping(v, opt.tuning.mapping))
         return usage_error("--mapping must be linear or log");
     } else if (a == "--feature-angle") {
       if (!(v = value()) || !parse_double(v, opt.feature_angle_deg))
@@ -357,8 +357,8 @@ int main(int argc, char** argv) {
       if (!(v = value()) ||
           (std::strcmp(v, "auto") && std::strcmp(v, "lazy") && std::strcmp(v, "eager")))
         return usage_error("--reprice must be auto, lazy or eager");
-      opt.lazy_reevaluation = std::strcmp(v, "eager") != 0;
-      opt.lazy_from_faces = !std::strcmp(v, "lazy") ? 0 : vrs::Options().lazy_from_faces;
+      opt.tuning.lazy_reevaluation = std::strcmp(v, "eager") != 0;
+      opt.tuning.lazy_from_faces = !std::strcmp(v, "lazy") ? 0 : vrs::Tuning().lazy_from_faces;
     } else if (a == "--threads") {
       size_t n = 0;
       if (!(v = value()) || !parse_count(v, n) || n > 1024)
@@ -368,7 +368,7 @@ int main(int argc, char** argv) {
       size_t n = 0;
       if (!(v = value()) || !parse_count(v, n) || n > (1u << 20))
         return usage_error("--intervals needs a count");
-      opt.intervals = static_cast<int>(n);
+      opt.tuning.intervals = static_cast<int>(n);
     } else if (a.size() > 1 && a[0] == '-') { // "-" alone: standard output
       return usage_error("unknown option " + a);
     } else if (in.empty()) {

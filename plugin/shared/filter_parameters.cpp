@@ -123,8 +123,8 @@ QString read_parameters(const RichParameterList& par, const CMeshO& m, FilterSet
 vrs::Options FilterSettings::options_for(int level, int faces, int vertices) const {
   vrs::Options o;
   o.mode = mode;
-  o.priority = priority;
-  o.intervals = intervals;
+  o.tuning.priority = priority;
+  o.tuning.intervals = intervals;
   o.simplify_boundary = !preserve_boundary;
   o.feature_angle_deg = feature_angle;
   vrs::Target& t = o.target;

@@ -54,7 +54,7 @@ TEST(BadInput, BadOptionsAreRefused) {
   expect_refused(m, ratio(-0.1), "ratio must be in [0, 1]");
   expect_refused(m, ratio(std::nan("")), "ratio must be in [0, 1]");
   Options o;
-  o.intervals = 1;
+  o.tuning.intervals = 1;
   expect_refused(m, o, "intervals");
   o = Options();
   o.max_valence = 1000;
@@ -215,9 +215,9 @@ TEST(BadInput, RandomTriangleSoupsGiveValidResults) {
     o.target.ratio = double(rng() % 101) / 100;
     o.target.max_factor = double(rng() % 5);
     o.mode = static_cast<Mode>(trial % 3);
-    o.queue = trial % 2 ? QueueKind::Heap : QueueKind::Intervals;
+    o.tuning.queue = trial % 2 ? QueueKind::Heap : QueueKind::Intervals;
     o.simplify_boundary = trial % 4 == 0;
-    o.intervals = 2 + int(rng() % 50);
+    o.tuning.intervals = 2 + int(rng() % 50);
     Mesh m = in;
     Report r = simplify(m, o);
     if (nf == 0) { // nothing to simplify: refused, the mesh as it was

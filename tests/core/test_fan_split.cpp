@@ -109,8 +109,8 @@ TEST(FanSplit, ACrackedMeshSimplifiesThroughItsCracksAndEachVertexComesOutOnce) 
       EXPECT_TRUE(vrs_test::same_bits(m, again)) << r << ", " << threads << " threads";
     }
     Options parts = o;
-    parts.part_vertices = 32;
-    parts.lazy_from_faces = 0; // the parts run with lazy prices only
+    parts.tuning.part_vertices = 32;
+    parts.tuning.lazy_from_faces = 0; // the parts run with lazy prices only
     Mesh p1 = in, p2 = in;
     const Report rp = simplify(p1, parts);
     ASSERT_EQ(vrs_test::check_run(in, p1, parts, rp), "") << r << " by parts";

@@ -190,7 +190,7 @@ TEST(LocalError, KeepsRemovedVerticesNearerTheResultThanThePapersFactor) {
     Mesh m = in;
     Options o;
     o.target.ratio = 0.1;
-    o.priority = i ? Priority::LocalError : Priority::Factor;
+    o.tuning.priority = i ? Priority::LocalError : Priority::Factor;
     Report r = simplify(m, o);
     ASSERT_TRUE(r.target_reached);
     auto at = [](const Mesh& mm, uint32_t v) {

@@ -87,22 +87,22 @@ TEST(Lods, LevelsNestAndEachIsAPrefixOfTheSharedOrder) {
 
 TEST(Lods, EachLevelIsTheRunOfTheFinerLevel) {
   // A level is exactly what simplify() makes of the finer level, priced as the input is
-  // (lazily from Options::lazy_from_faces on, even where a level is smaller): the chain adds
+  // (lazily from Tuning::lazy_from_faces on, even where a level is smaller): the chain adds
   // nothing.
   const Mesh in = vrs_test::icosphere(4); // 5120 faces; the first level 2560
-  for (size_t lazy_from : {size_t(4000), Options().lazy_from_faces}) {
+  for (size_t lazy_from : {size_t(4000), Tuning().lazy_from_faces}) {
     Options o;
     o.threads = 1;
-    o.lazy_from_faces = lazy_from;
+    o.tuning.lazy_from_faces = lazy_from;
     const LodChain chain = simplify_lods(in, {0.5, 0.2}, o);
     ASSERT_TRUE(chain.ok);
     // The two runs by hand, each level's faces in input vertex ids.
     Options a = o;
     a.target.kind = TargetKind::Faces;
     if (in.face_count() >= lazy_from)
-      a.lazy_from_faces = 0; // lazy
+      a.tuning.lazy_from_faces = 0; // lazy
     else
-      a.lazy_reevaluation = false; // eager
+      a.tuning.lazy_reevaluation = false; // eager
     std::vector<uint32_t> ids(in.vertex_count());
     for (uint32_t v = 0; v < ids.size(); ++v)
       ids[v] = v;

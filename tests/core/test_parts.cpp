@@ -93,8 +93,8 @@ TEST(Parts, SameOutputWhateverTheThreadCountAndEveryInvariantKept) {
   for (const auto& c : cases)
     for (int variant = 0; variant < 5; ++variant) {
       Options o;
-      o.part_vertices = 64;  // small parts: these meshes are cut into dozens
-      o.lazy_from_faces = 0; // the parts run with lazy prices, here on small meshes too
+      o.tuning.part_vertices = 64;  // small parts: these meshes are cut into dozens
+      o.tuning.lazy_from_faces = 0; // the parts run with lazy prices, here on small meshes too
       o.target.ratio = variant == 4 ? 0.01 : 0.1;
       o.corner_sources = true;
       if (variant == 1) o.simplify_boundary = true;
@@ -113,7 +113,7 @@ TEST(Parts, SameOutputWhateverTheThreadCountAndEveryInvariantKept) {
       }
       // The parts ran: one queue from the start ends elsewhere.
       Options whole = o;
-      whole.part_vertices = 0;
+      whole.tuning.part_vertices = 0;
       Mesh w = c.mesh;
       run(w, whole, 1);
       EXPECT_FALSE(vrs_test::same_bits(one, w)) << what << ": the parts did not run";
@@ -135,8 +135,8 @@ TEST(Parts, CancellingWhileThePartsRunLeavesAValidMeshTheSameOnAnyThreads) {
   std::vector<Mesh> outs;
   for (int threads : {1, 2}) {
     Options o;
-    o.part_vertices = 256;
-    o.lazy_from_faces = 0;
+    o.tuning.part_vertices = 256;
+    o.tuning.lazy_from_faces = 0;
     o.target.ratio = 0.05;
     o.threads = threads;
     int calls = 0;
@@ -156,7 +156,7 @@ TEST(Parts, ABadPartSizeIsRefused) {
   for (int size : {-1, 1, 63}) {
     Mesh m = in;
     Options o;
-    o.part_vertices = size;
+    o.tuning.part_vertices = size;
     const Report r = simplify(m, o);
     EXPECT_FALSE(r.ok) << size;
     EXPECT_NE(r.message.find("part vertices"), std::string::npos) << r.message;

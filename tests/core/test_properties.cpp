@@ -24,7 +24,7 @@ TEST_P(RealMesh, KeepsTheInvariants) {
   Mesh m = in;
   Options o;
   o.target.ratio = ratio;
-  o.priority = priority;
+  o.tuning.priority = priority;
   const Report r = simplify(m, o);
   ASSERT_TRUE(r.ok) << r.message;
 
@@ -123,7 +123,7 @@ TEST(Fill, BestReachesWhatTheProjectionAloneCannot) {
     Mesh m = in;
     Options o;
     o.target.ratio = 0.01;
-    o.fill = fill;
+    o.tuning.fill = fill;
     const Report r = simplify(m, o);
     ASSERT_TRUE(r.ok);
     EXPECT_EQ(vrs_test::check_run(in, m, o, r), "");

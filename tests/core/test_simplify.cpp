@@ -71,7 +71,7 @@ TEST(Simplify, TetrahedronCannotLoseAVertex) {
   for (Priority p : {Priority::Factor, Priority::LocalError}) {
     Mesh in = vrs_test::tetrahedron(), m = in;
     Options o = faces(0);
-    o.priority = p;
+    o.tuning.priority = p;
     Report r = simplify(m, o);
     expect_valid(in, m, r);
     EXPECT_EQ(m.face_count(), 4u);
@@ -116,7 +116,7 @@ TEST(Simplify, BoundarySimplificationPricesTheOutlineCorners) {
       Options o; // a priority bound: no count to meet, so no last-resort pass
       o.target.kind = TargetKind::MaxFactor;
       o.target.max_factor = bound;
-      o.priority = priority;
+      o.tuning.priority = priority;
       o.simplify_boundary = true;
       Report r = simplify(m, o);
       expect_valid(in, m, r);
@@ -150,7 +150,7 @@ TEST(Simplify, ASmallOpenPieceThinsBeforeAnyLastResort) {
   for (Priority priority : {Priority::LocalError, Priority::Factor}) {
     Mesh m = in;
     Options o = faces(2);
-    o.priority = priority;
+    o.tuning.priority = priority;
     Report r = simplify(m, o);
     expect_valid(in, m, r);
     EXPECT_TRUE(r.boundary_simplified);
@@ -169,7 +169,7 @@ TEST(Simplify, ASmallOpenPieceThinsBeforeAnyLastResort) {
 TEST(Simplify, LastResortCutsOutlineCornersOnlyForACountTarget) {
   Mesh in = vrs_test::grid(8), m = in;
   Options o = faces(0);
-  o.priority = Priority::Factor; // the local error prices the corners before any last resort
+  o.tuning.priority = Priority::Factor; // the local error prices the corners before any last resort
   o.simplify_boundary = true;
   o.max_price_jump = 0; // the target at any cost
   Report r = simplify(m, o);
@@ -188,7 +188,7 @@ TEST(Simplify, StopsShortRatherThanCutTheOutline) {
     Mesh m = in;
     Options o = faces(0);
     o.simplify_boundary = true;
-    o.lazy_from_faces = lazy ? 0 : o.lazy_from_faces; // eager: the default on a small mesh
+    o.tuning.lazy_from_faces = lazy ? 0 : o.tuning.lazy_from_faces; // eager: the default on a small mesh
     Report r = simplify(m, o);
     expect_valid(in, m, r);
     EXPECT_EQ(r.stop, StopReason::NoCandidates);
@@ -310,7 +310,7 @@ TEST(Simplify, MaxFactorRemovesOnlyVerticesUnderIt) {
     const Mesh in = vrs_test::icosphere(3);
     Mesh m = in;
     Options o;
-    o.priority = p;
+    o.tuning.priority = p;
     o.target.kind = TargetKind::MaxFactor;
     // A sphere's vertices all stand ~0.01 off their neighbours' plane; a removal's patch, a
     // ring wide, sags further (and the local error weighs the patch's area).
@@ -338,8 +338,8 @@ TEST(Simplify, AutoStopsWhenOnlyTheLastIntervalIsLeft) {
     Mesh m = in;
     Options o;
     o.target.kind = TargetKind::Auto;
-    o.intervals = variant & 1 ? 1000 : 2;
-    o.priority = variant & 2 ? Priority::LocalError : Priority::Factor;
+    o.tuning.intervals = variant & 1 ? 1000 : 2;
+    o.tuning.priority = variant & 2 ? Priority::LocalError : Priority::Factor;
     Report r = simplify(m, o);
     expect_valid(in, m, r);
     EXPECT_EQ(r.stop, StopReason::LastInterval);
@@ -348,7 +348,7 @@ TEST(Simplify, AutoStopsWhenOnlyTheLastIntervalIsLeft) {
     // The local error of the spike's neighbours (their fans hold its steep faces) can top the
     // spike's own, so f_max and the last interval's floor are theirs: with a narrow last
     // interval the spike itself may go at the very end. The paper's factor keeps it.
-    if (o.priority == Priority::Factor || o.intervals == 2) {
+    if (o.tuning.priority == Priority::Factor || o.tuning.intervals == 2) {
       EXPECT_NE(r.remap[spike], kRemoved) << variant;
     }
   }
@@ -377,8 +377,8 @@ TEST(Simplify, SameInputSameOutput) {
     Mesh a = in, b = in;
     Options o;
     o.target.ratio = 0.1;
-    o.queue = variant & 1 ? QueueKind::Heap : QueueKind::Intervals;
-    o.priority = variant & 2 ? Priority::Factor : Priority::LocalError;
+    o.tuning.queue = variant & 1 ? QueueKind::Heap : QueueKind::Intervals;
+    o.tuning.priority = variant & 2 ? Priority::Factor : Priority::LocalError;
     simplify(a, o);
     simplify(b, o);
     EXPECT_EQ(a.positions, b.positions);
@@ -415,9 +415,9 @@ TEST(Simplify, HeapAndLogarithmicMappingReachTheTarget) {
     Options o;
     o.target.ratio = 0.02;
     if (variant)
-      o.queue = QueueKind::Heap;
+      o.tuning.queue = QueueKind::Heap;
     else
-      o.mapping = IntervalMapping::Logarithmic;
+      o.tuning.mapping = IntervalMapping::Logarithmic;
     Report r = simplify(m, o);
     expect_valid(in, m, r);
     EXPECT_TRUE(r.target_reached);

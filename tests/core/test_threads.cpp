@@ -126,11 +126,11 @@ TEST(Threads, SameOutputAndReportWhateverTheThreadCount) {
       o.corner_sources = true;
       switch (variant) {
       case 1: o.simplify_boundary = true; break;
-      case 2: o.priority = Priority::Factor; break;
-      case 3: o.lazy_reevaluation = false; break;
+      case 2: o.tuning.priority = Priority::Factor; break;
+      case 3: o.tuning.lazy_reevaluation = false; break;
       case 4: o.feature_angle_deg = 40; break;
       case 5: o.mode = c.name == "terrain" ? Mode::Terrain25D : Mode::Surface3D; break;
-      case 7: o.lazy_from_faces = 0; break; // lazy on these small meshes too
+      case 7: o.tuning.lazy_from_faces = 0; break; // lazy on these small meshes too
       default: break;
       }
       const Outcome one = run(c.mesh, o, 1);
@@ -218,15 +218,15 @@ TEST(Threads, ABadCountIsRefusedAndTheMeshLeftAlone) {
   }
 }
 
-// Small meshes are priced at once (Options::lazy_from_faces): the default run is the eager
+// Small meshes are priced at once (Tuning::lazy_from_faces): the default run is the eager
 // one below the size and the lazy one from it on.
 TEST(Reevaluation, SmallMeshesArePricedAtOnceLargeOnesWhenPopped) {
   const Mesh in = vrs_test::icosphere(4); // 5120 faces
   auto run_with = [&](bool lazy, size_t lazy_from) {
     Options o;
     o.target.ratio = 0.1;
-    o.lazy_reevaluation = lazy;
-    o.lazy_from_faces = lazy_from;
+    o.tuning.lazy_reevaluation = lazy;
+    o.tuning.lazy_from_faces = lazy_from;
     Mesh m = in;
     const Report r = simplify(m, o);
     EXPECT_EQ(vrs_test::check_run(in, m, o, r), "");
@@ -234,7 +234,7 @@ TEST(Reevaluation, SmallMeshesArePricedAtOnceLargeOnesWhenPopped) {
   };
   const Mesh lazy = run_with(true, 0), eager = run_with(false, 0);
   ASSERT_FALSE(vrs_test::same_bits(lazy, eager)); // else this test tells nothing
-  EXPECT_TRUE(vrs_test::same_bits(run_with(true, Options().lazy_from_faces), eager));
+  EXPECT_TRUE(vrs_test::same_bits(run_with(true, Tuning().lazy_from_faces), eager));
   EXPECT_TRUE(vrs_test::same_bits(run_with(true, in.face_count() + 1), eager));
   EXPECT_TRUE(vrs_test::same_bits(run_with(true, in.face_count()), lazy));
 }
@@ -248,8 +248,8 @@ TEST(Reevaluation, LazyAndEagerBothKeepEveryInvariantAndReachTheTarget) {
       for (double ratio : {0.5, 0.1}) {
         Options o;
         o.target.ratio = ratio;
-        o.lazy_reevaluation = lazy;
-        o.lazy_from_faces = 0; // lazy means lazy here, whatever the size
+        o.tuning.lazy_reevaluation = lazy;
+        o.tuning.lazy_from_faces = 0; // lazy means lazy here, whatever the size
         Mesh m = in;
         Report r = simplify(m, o);
         ASSERT_EQ(vrs_test::check_run(in, m, o, r), "") << name << (lazy ? " lazy" : " eager");

@@ -51,26 +51,26 @@ FuzzCase decode_fuzz_case(const uint8_t* data, size_t size) {
   // on meshes the fuzzer makes (from 256 vertices), with lazy prices as parts need (the
   // other kinds are priced eagerly, as small meshes are by default).
   if ((f0 & 7) >= 5) {
-    o.part_vertices = 64;
-    o.lazy_from_faces = 0;
+    o.tuning.part_vertices = 64;
+    o.tuning.lazy_from_faces = 0;
   }
   o.mode = vrs::Mode(((f0 >> 3) & 3) % 3);
   // Mode bits 3 (a second surface mode): split vertices welded freely instead of as seams.
   if (((f0 >> 3) & 3) == 3) o.split_vertices = vrs::SplitVertices::Weld;
-  o.queue = f0 & 0x20 ? vrs::QueueKind::Heap : vrs::QueueKind::Intervals;
-  o.mapping = f0 & 0x40 ? vrs::IntervalMapping::Logarithmic : vrs::IntervalMapping::Linear;
+  o.tuning.queue = f0 & 0x20 ? vrs::QueueKind::Heap : vrs::QueueKind::Intervals;
+  o.tuning.mapping = f0 & 0x40 ? vrs::IntervalMapping::Logarithmic : vrs::IntervalMapping::Linear;
   o.simplify_boundary = f0 & 0x80;
-  o.priority = f1 & 1 ? vrs::Priority::Factor : vrs::Priority::LocalError;
+  o.tuning.priority = f1 & 1 ? vrs::Priority::Factor : vrs::Priority::LocalError;
   const bool raw_indices = f1 & 2, locks = f1 & 4, cancel = f1 & 8, unchecked = f1 & 16;
   const bool constrained = f1 & 32, creases = f1 & 64;
-  o.fill = f1 & 128 ? vrs::Fill::Projection : vrs::Fill::Best;
+  o.tuning.fill = f1 & 128 ? vrs::Fill::Projection : vrs::Fill::Best;
 
   const uint16_t intervals = in.u16();
   const uint8_t valence = in.u8();
   const uint32_t param = in.u32();
   const uint8_t cancel_after = in.u8(), lock_stride = in.u8();
   // Options: in range unless `unchecked` (then the core must refuse cleanly).
-  o.intervals = unchecked ? int(int16_t(intervals)) : 2 + intervals % 2000;
+  o.tuning.intervals = unchecked ? int(int16_t(intervals)) : 2 + intervals % 2000;
   o.max_valence = unchecked ? int(int8_t(valence)) : 3 + valence % 62;
   float raw_param;
   std::memcpy(&raw_param, &param, 4);

@@ -86,7 +86,7 @@ int main(int argc, char** argv) {
       // face spans two charts.
       o.constrained_edges = &seams;
       o.corner_sources = !seams.empty();
-      o.priority = a.priority;
+      o.tuning.priority = a.priority;
       float last = -1;
       if (a.progress || a.cancel_at >= 0)
         o.progress = [&](float f) {

@@ -89,9 +89,10 @@ enum class SplitVertices : uint8_t { Keep, Seam, Weld };
 // valid (every removal is atomic).
 using ProgressFn = std::function<bool(float fraction)>;
 
-struct Options {
-  Target target;
-  Mode mode = Mode::Surface3D;
+// The benchmark's switches: the paper's variants and the ways this implementation departs from
+// them, kept so that bench/ablation.md can measure each. Users leave them as they are; the
+// command line and the plugin still offer the paper's (queue, mapping, intervals, priority).
+struct Tuning {
   QueueKind queue = QueueKind::Intervals;
   Priority priority = Priority::LocalError;
   Fill fill = Fill::Best;
@@ -99,6 +100,35 @@ struct Options {
   // Number of hash-table intervals, >= 2. The last one holds the vertices of highest factor;
   // TargetKind::Auto stops when only it is left, so more intervals simplify further.
   int intervals = 1000;
+  // With Priority::LocalError, after a removal the neighbours still queued are only marked
+  // stale and priced again when popped (pushed back if they no longer lead the queue); false
+  // prices them all at once (the paper's way, and always with Priority::Factor, whose price
+  // is cheap). Lazy halves the work or better; a neighbour whose price fell waits in place.
+  bool lazy_reevaluation = true;
+  // Lazy re-evaluation only on meshes of at least this many faces: smaller ones are priced at
+  // once, where the whole run takes a fraction of a second and eager prices order it better
+  // (less mean error, most at low targets, for about twice the time; CHANGELOG.md).
+  // 0: lazy_reevaluation alone decides.
+  size_t lazy_from_faces = 20000;
+  // Fold-overs judged against the input, not only against faces that may already lean far
+  // from it. With Priority::LocalError: each removed vertex is carried by the face nearest it,
+  // and a removal is refused where a new triangle would face against the input's normal at a
+  // vertex it carries (4 bytes a vertex and a face, about an eighth more time). Once the
+  // vetoes are eased to reach a count target (Report::relaxed_removals), with either
+  // priority, a new triangle must also not turn more than 90 degrees from the input face
+  // nearest it (the input's faces are kept for that: 12 bytes a face), unless the target is
+  // asked at any cost (max_price_jump 0).
+  bool against_input = true;
+  // Meshes of four parts or more are cut into parts of this many vertices along space, and
+  // each part makes its cheapest removals on its own queue, all up to one shared price,
+  // before the whole mesh's queue makes the last ones: every thread busy, the same output on
+  // any number of them. 0: the whole mesh's queue from the start.
+  int part_vertices = 16384;
+};
+
+struct Options {
+  Target target;
+  Mode mode = Mode::Surface3D;
   // Boundary vertices are kept by default (paper §2.2). When true, a boundary vertex may be
   // removed (factor: the larger of its distance to the line through its two boundary neighbours
   // and its average-plane factor); vertices of a single triangle are kept unless a count target
@@ -112,7 +142,7 @@ struct Options {
   // vertices of a surface of V vertices and F faces has at least 2B - 2V + F faces), the
   // border is simplified too (Report::boundary_simplified), as QECD does by default. Kept
   // whatever the target, such runs emptied the interior onto the border (a flat patch turned
-  // into a tent fanned from one corner, 29 % of the diagonal off). False: the paper's rule.
+  // into a tent fanned from one corner). False: the paper's rule.
   bool simplify_boundary_when_needed = true;
   SplitVertices split_vertices = SplitVertices::Seam;
   // A triangle of the projection filling may turn at most this far from the average plane's
@@ -139,25 +169,6 @@ struct Options {
   // Edges whose two faces' normals turn more than this many degrees apart are constrained too
   // (creases, as vtkDecimatePro's feature angle). 0 = off; in [0, 180].
   double feature_angle_deg = 0.0;
-  // With Priority::LocalError, after a removal the neighbours still queued are only marked
-  // stale and priced again when popped (pushed back if they no longer lead the queue); false
-  // prices them all at once (the paper's way, and always with Priority::Factor, whose price
-  // is cheap). Lazy halves the work or better; a neighbour whose price fell waits in place.
-  bool lazy_reevaluation = true;
-  // Lazy re-evaluation only on meshes of at least this many faces: smaller ones are priced at
-  // once, where the whole run takes a fraction of a second and eager prices order it better
-  // (less mean error, most at low targets, for about twice the time; CHANGELOG.md).
-  // 0: lazy_reevaluation alone decides.
-  size_t lazy_from_faces = 20000;
-  // Fold-overs judged against the input, not only against faces that may already lean far
-  // from it. With Priority::LocalError: each removed vertex is carried by the face nearest it,
-  // and a removal is refused where a new triangle would face against the input's normal at a
-  // vertex it carries (4 bytes a vertex and a face, about an eighth more time). Once the
-  // vetoes are eased to reach a count target (Report::relaxed_removals), with either
-  // priority, a new triangle must also not turn more than 90 degrees from the input face
-  // nearest it (the input's faces are kept for that: 12 bytes a face), unless the target is
-  // asked at any cost (max_price_jump 0).
-  bool against_input = true;
   // With Priority::LocalError and a count target: when the cheapest removal left would cost
   // more than this many times the dearest one made so far (and more than 1e-3 of the
   // bounding-box diagonal), the surface is about to change abruptly (a part dropped, a tunnel
@@ -176,11 +187,6 @@ struct Options {
   // Threads to plan removals on (0: the machine's hardware threads). The output is the same
   // whatever the number: independent removals are planned together, committed in queue order.
   int threads = 0;
-  // Meshes of four parts or more are cut into parts of this many vertices along space, and
-  // each part makes its cheapest removals on its own queue, all up to one shared price,
-  // before the whole mesh's queue makes the last ones: every thread busy, the same output on
-  // any number of them. 0: the whole mesh's queue from the start.
-  int part_vertices = 16384;
   // A guaranteed error: no point of the output farther than this from the input surface, and
   // no point of the input farther than this from the output (symmetric Hausdorff distance),
   // in mesh units. 0 = off. With a count target too, whichever comes first stops the run.
@@ -198,6 +204,7 @@ struct Options {
   // stored per face corner) can follow the simplification. Costs 12 bytes a face.
   bool corner_sources = false;
   ProgressFn progress;
+  Tuning tuning;
 };
 
 // Why a candidate removal was refused; the vertex stays and is retried after its ring changes.
@@ -345,7 +352,7 @@ std::string report_json(const Report& report, const ReportContext& context);
 Report simplify(Mesh& mesh, const Options& options);
 
 // The options for a run on a piece of a larger input (a tile, a level of detail made from the
-// finer one): re-priced as the whole input would be in core (Options::lazy_from_faces read
+// finer one): re-priced as the whole input would be in core (Tuning::lazy_from_faces read
 // against `input_faces`), not by the piece's own size.
 Options priced_as_input(Options options, size_t input_faces);
 

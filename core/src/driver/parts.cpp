@@ -135,8 +135,8 @@ bool Simplifier::by_parts() const {
   const bool counts = opt_.target.kind == TargetKind::Faces ||
                       opt_.target.kind == TargetKind::Ratio ||
                       opt_.target.kind == TargetKind::Vertices;
-  return opt_.part_vertices > 0 && counts && lazy_ && face_bound_.empty() &&
-         mesh_.vertex_count() >= 4 * size_t(opt_.part_vertices);
+  return opt_.tuning.part_vertices > 0 && counts && lazy_ && face_bound_.empty() &&
+         mesh_.vertex_count() >= 4 * size_t(opt_.tuning.part_vertices);
 }
 
 void Simplifier::run_part(Part& part, double threshold, size_t cap, const uint8_t* frozen) {
@@ -227,7 +227,7 @@ bool Simplifier::run_parts() {
   // Two cuts, the second shifted by half a part, each in rounds: the second frees most of
   // what the first kept frozen along its borders.
   const size_t needed0 = removals_needed();
-  const uint32_t size = uint32_t(opt_.part_vertices);
+  const uint32_t size = uint32_t(opt_.tuning.part_vertices);
   for (uint32_t shift : {0u, size / 2}) {
     Parts parts = make_parts(mesh_.triangles, topo_, size, shift, fans_.sibling, &workers_);
     if (!run_cut(parts, needed0)) return false;

@@ -17,7 +17,7 @@ namespace vrs {
 
 class Workers;
 
-// Parts of Options::part_vertices vertices, consecutive in the spatial order (which follows
+// Parts of Tuning::part_vertices vertices, consecutive in the spatial order (which follows
 // a Z-order curve): an option, not the thread count, so that the output does not depend on it.
 // A second cut shifted by half a part puts the first one's borders inside parts.
 struct Parts {

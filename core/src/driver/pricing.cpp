@@ -32,7 +32,7 @@ Evaluation Simplifier::evaluate_plane(uint32_t v, const Ring& ring, double* chor
 Simplifier::Priced Simplifier::evaluate(uint32_t v, const Ring& ring) const {
   double chord = 0;
   Evaluation e = evaluate_plane(v, ring, &chord);
-  if (opt_.priority == Priority::Factor || !std::isfinite(e.factor)) return {e.factor};
+  if (opt_.tuning.priority == Priority::Factor || !std::isfinite(e.factor)) return {e.factor};
   Patch patch;
   double cost = 0;
   // The mesh look-ups wait for the pop, where the plan is made again in full.

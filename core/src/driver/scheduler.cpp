@@ -36,7 +36,7 @@ void TakenMarks::clear(std::vector<uint8_t>& flags) {
 // saved about a sixth of the time on one thread at 1.2 M faces, and the last one an eighth
 // of the two-thread time at 4.8 M.
 void Simplifier::plan_removal(Planned& p, bool areas) const {
-  const bool local = opt_.priority == Priority::LocalError;
+  const bool local = opt_.tuning.priority == Priority::LocalError;
   const uint32_t* tris = mesh_.triangles.data();
   p.stale = flags_[p.v] & kFlagStale;
   p.why = RejectCount;

@@ -140,13 +140,13 @@ void Simplifier::first_prices(UninitVector<uint8_t>& kinds, UninitVector<FirstPr
   limits_.fold_budget = 5e-4 * input_area;
   planner_ =
       Planner(eval_, topo_, t.data(), normals_.data(), limits_, Pricer{&estimate, &price, this},
-              opt_.fill == Fill::Best, opt_.mode != Mode::Surface3D);
+              opt_.tuning.fill == Fill::Best, opt_.mode != Mode::Surface3D);
   if (opt_.max_error > 0) {
     face_bound_.assign(t.size() / 3, 0.0f); // the input is its own surface
     limits_.max_error = opt_.max_error;
     planner_.set_face_bounds(face_bound_.data());
   }
-  if (opt_.against_input && opt_.priority == Priority::LocalError) {
+  if (opt_.tuning.against_input && opt_.tuning.priority == Priority::LocalError) {
     carried_.init(t.size() / 3, n, &workers_);
     planner_.set_carried(&carried_);
   }
@@ -383,7 +383,7 @@ void Simplifier::prepare() {
   UninitVector<uint8_t>().swap(kinds);
   // Not when the target is asked at any cost (max_price_jump 0): the eased passes then fold
   // where nothing else reaches it, as before. The hierarchy is built when a plan first asks.
-  if (opt_.against_input && opt_.relax_to_reach_target && opt_.max_price_jump > 0) {
+  if (opt_.tuning.against_input && opt_.relax_to_reach_target && opt_.max_price_jump > 0) {
     const TurnedSlots turned = turned_slots();
     std::vector<uint8_t> by_slot;
     if (turned.any()) {

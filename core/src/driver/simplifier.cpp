@@ -42,8 +42,8 @@ float Simplifier::progress_fraction(size_t queued, size_t queued0) const {
 template <class Queue> void Simplifier::run(Queue& queue) {
   const size_t n = mesh_.vertex_count();
   IntervalMap map;
-  map.n = opt_.intervals;
-  map.kind = opt_.mapping;
+  map.n = opt_.tuning.intervals;
+  map.kind = opt_.tuning.mapping;
   const bool by_factor = opt_.target.kind == TargetKind::MaxFactor;
   // In the input's order, as the paper fills its table: the FIFO of an interval then follows
   // the input, not space, and removals spread over the mesh. The candidates and the highest
@@ -172,10 +172,10 @@ template <class Queue> void Simplifier::run(Queue& queue) {
 }
 
 Options priced_as_input(Options options, size_t input_faces) {
-  if (input_faces >= options.lazy_from_faces)
-    options.lazy_from_faces = 0; // lazy whatever the piece's size
+  if (input_faces >= options.tuning.lazy_from_faces)
+    options.tuning.lazy_from_faces = 0; // lazy whatever the piece's size
   else
-    options.lazy_reevaluation = false; // eager whatever the piece's size
+    options.tuning.lazy_reevaluation = false; // eager whatever the piece's size
   return options;
 }
 
@@ -202,7 +202,7 @@ Report simplify_recorded(Mesh& mesh, const Options& options, RemovalRecord* reco
   s.prepare();
   if (!s.run_parts()) {
     // cancelled while the parts ran
-  } else if (options.queue == QueueKind::Heap) {
+  } else if (options.tuning.queue == QueueKind::Heap) {
     HeapQueue q;
     s.run(q);
   } else {

@@ -42,7 +42,7 @@ class Simplifier {
     // The local error prices an outline corner's removal (its distance to the new patch, over
     // the fan's area): the corner rule is the factor's. Kept, it left small open pieces (hair
     // strips, a shark's holes) dense until the last resort, while the rest paid for them.
-    if (opt.priority != Priority::Factor) eval_.set_boundary_corner_cos(-1.0);
+    if (opt.tuning.priority != Priority::Factor) eval_.set_boundary_corner_cos(-1.0);
   }
   Simplifier(const Simplifier&) = delete;
 
@@ -235,16 +235,16 @@ class Simplifier {
   // Not before 16 removals (a few are no history to jump from), nor under an error bound (it
   // says itself how far a removal may go).
   bool jumps(double price) const {
-    return opt_.max_price_jump > 0 && opt_.priority == Priority::LocalError && rep_.removed >= 16 &&
+    return opt_.max_price_jump > 0 && opt_.tuning.priority == Priority::LocalError && rep_.removed >= 16 &&
            !(opt_.max_error > 0 && std::isfinite(opt_.max_error)) &&
            price > jump_bar() * std::max(jump_base(), jump_floor_);
   }
   bool simplify_boundary_ = opt_.simplify_boundary; // or on when the kept border needs it
   // Queued neighbours of a removal are re-priced when popped. The paper's factor is the plane
   // alone, cheap to make at once: lazy only pays where the price is a plan, and on a large
-  // mesh (Options::lazy_from_faces).
-  const bool lazy_ = opt_.lazy_reevaluation && opt_.priority == Priority::LocalError &&
-                     mesh_.face_count() >= opt_.lazy_from_faces;
+  // mesh (Tuning::lazy_from_faces).
+  const bool lazy_ = opt_.tuning.lazy_reevaluation && opt_.tuning.priority == Priority::LocalError &&
+                     mesh_.face_count() >= opt_.tuning.lazy_from_faces;
   Topology topo_;
   Workers workers_{opt_.threads > 0 ? opt_.threads : hardware_threads()};
   std::vector<Planned> batch_;

@@ -36,7 +36,7 @@ ProgressiveMesh simplify_progressive(const Mesh& input, const Options& options,
   // a kept vertex after the run, which no insertion could undo.
   Options o = options;
   o.threads = 1;
-  o.part_vertices = 0; // one queue: its order is the order of removal of a run to any size
+  o.tuning.part_vertices = 0; // one queue: its order is the order of removal of a run to any size
   o.slide = false;
   o.corner_sources = true;
   std::vector<uint32_t> edges =

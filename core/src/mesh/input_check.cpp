@@ -17,17 +17,17 @@ std::string check_options(const Options& o, size_t vertex_count, size_t face_cou
   if (t.kind == TargetKind::MaxFactor && !(t.max_factor >= 0.0 && std::isfinite(t.max_factor)))
     return "max factor must be finite and >= 0, got " + std::to_string(t.max_factor);
   if (static_cast<unsigned>(o.mode) > static_cast<unsigned>(Mode::Planar2D)) return "unknown mode";
-  if (static_cast<unsigned>(o.queue) > static_cast<unsigned>(QueueKind::Heap))
+  if (static_cast<unsigned>(o.tuning.queue) > static_cast<unsigned>(QueueKind::Heap))
     return "unknown queue";
-  if (static_cast<unsigned>(o.mapping) > static_cast<unsigned>(IntervalMapping::Logarithmic))
+  if (static_cast<unsigned>(o.tuning.mapping) > static_cast<unsigned>(IntervalMapping::Logarithmic))
     return "unknown interval mapping";
   if (o.threads < 0 || o.threads > 1024)
     return "threads must be in [0, 1024] (0: all hardware threads), got " +
            std::to_string(o.threads);
-  if (o.part_vertices < 0 || (o.part_vertices > 0 && o.part_vertices < 64))
-    return "part vertices must be 0 (no parts) or >= 64, got " + std::to_string(o.part_vertices);
-  if (o.intervals < 2 || o.intervals > (1 << 20))
-    return "intervals must be in [2, 1048576], got " + std::to_string(o.intervals);
+  if (o.tuning.part_vertices < 0 || (o.tuning.part_vertices > 0 && o.tuning.part_vertices < 64))
+    return "part vertices must be 0 (no parts) or >= 64, got " + std::to_string(o.tuning.part_vertices);
+  if (o.tuning.intervals < 2 || o.tuning.intervals > (1 << 20))
+    return "intervals must be in [2, 1048576], got " + std::to_string(o.tuning.intervals);
   if (!(o.max_normal_angle_deg > 0.0 && o.max_normal_angle_deg <= 90.0))
     return "max normal angle must be in (0, 90] degrees, got " +
            std::to_string(o.max_normal_angle_deg);
