@@ -126,7 +126,7 @@ TEST(LocalError, CornersOnACreaseAreAlsoPricedByTheSurfaceMoved) {
         m.positions[i + c] *= wide ? 2.0f : 1.0f;
     Planned p = plan_centre(m, 6, {0, 0, 1});
     ASSERT_EQ(p.why, RejectCount);
-    EXPECT_EQ(p.patch.corner_doubts, 0); // every corner's normal is the patch's
+    EXPECT_EQ(p.patch.unsure_corners, 0); // every corner's normal is the patch's
     Evaluator eval(Mode::Surface3D, {0, 0, 1}, m.positions.data());
     local[wide] = patch_error(6, p.ring, p.patch, eval, 1.0);
     // The old fan stands h/3 over the new patch at its faces' centroids, h/2 halfway to the
@@ -143,9 +143,9 @@ TEST(LocalError, CornersOnACreaseAreAlsoPricedByTheSurfaceMoved) {
     const OldFan fan(6, p.ring, p.patch, eval);
     const double moved = moved_surface(fan, p.ring, p.patch, eval.position(6));
     EXPECT_NEAR(moved - old_area * 5 * h / 12, new_area * h / 2, new_area * h / 2);
-    p.patch.corner_doubts = kCornerTurned;
+    p.patch.unsure_corners = kCornerTurned;
     EXPECT_EQ(patch_error(6, p.ring, p.patch, eval, 1.0), local[wide]);
-    p.patch.corner_doubts = kCornerOnCrease;
+    p.patch.unsure_corners = kCornerOnCrease;
     crease[wide] = patch_error(6, p.ring, p.patch, eval, 1.0);
     EXPECT_GE(crease[wide], local[wide]);
     EXPECT_NEAR(crease[wide], std::max(local[wide], std::sqrt(local[wide] * moved)), 1e-12);
@@ -154,7 +154,7 @@ TEST(LocalError, CornersOnACreaseAreAlsoPricedByTheSurfaceMoved) {
   // A ring vertex whose faces spread wide puts the planner's patch on a crease.
   Planned spread = plan_centre(vrs_test::hexagon_fan(h), 6, {0, 0, 1}, 0.6f);
   ASSERT_EQ(spread.why, RejectCount);
-  EXPECT_EQ(spread.patch.corner_doubts, kCornerOnCrease);
+  EXPECT_EQ(spread.patch.unsure_corners, kCornerOnCrease);
 }
 
 TEST(LocalError, ASaddleIsPricedByItsFarthestNewPoint) {

@@ -65,25 +65,25 @@ TEST(Vetoes, CornersSayWhenTheyCannotVouchForAPatch) {
   Evaluator eval(Mode::Surface3D, {0, 0, 1}, s.mesh.positions.data());
   Patch p = projected(s, 6, {0, 0, 1});
   ASSERT_TRUE(fill_candidate(s.ring, OpenRing::Border, 1, p));
-  auto doubts = [&] {
+  auto unsure = [&] {
     uint8_t d = 0;
     EXPECT_EQ(veto_shape(s.ring, p, p.face_n, s.normals.data(), RemovalLimits{}, false, &d),
               RejectCount);
     return int(d);
   };
-  EXPECT_EQ(doubts(), 0);
+  EXPECT_EQ(unsure(), 0);
   const uint32_t corner = s.ring.v[2];
   float* n = s.normals.data() + 4 * size_t(corner);
   n[0] = 0.866f, n[1] = 0, n[2] = 0.5f; // 60 degrees off, still on the patch's side
-  EXPECT_EQ(doubts(), kCornerTurned);
+  EXPECT_EQ(unsure(), kCornerTurned);
   n[0] = 0, n[2] = 1;
   n[3] = 0.6f; // its faces spread about 37 degrees
-  EXPECT_EQ(doubts(), kCornerOnCrease);
+  EXPECT_EQ(unsure(), kCornerOnCrease);
   n[0] = 0.866f, n[2] = 0.5f;
-  EXPECT_EQ(doubts(), kCornerTurned | kCornerOnCrease);
+  EXPECT_EQ(unsure(), kCornerTurned | kCornerOnCrease);
   n[0] = 0, n[2] = 1;
   n[3] = 0.1f;
-  EXPECT_EQ(doubts(), 0);
+  EXPECT_EQ(unsure(), 0);
 }
 
 TEST(Vetoes, TopologyRefusesATriangleThatAlreadyExists) {

@@ -20,7 +20,8 @@ import numpy as np
 
 def main():
     top = pathlib.Path(sys.argv[1])
-    pages = [top / "README.md"] + sorted((top / "docs").glob("*.md"))
+    pages = [top / "README.md"] + sorted((top / "docs").glob("*.md")) + sorted(
+        (top / "docs").glob("*/*.md"))
     work = pathlib.Path(tempfile.mkdtemp(prefix="vrs-examples-"))
     os.chdir(work)
 

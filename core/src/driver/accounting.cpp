@@ -39,7 +39,7 @@ template <class Queue> void Simplifier::account(const Planned& p, Queue& queue) 
   --vertices_;
   ++rep_.removed;
   rep_.relaxed_removals += eased();
-  rep_.max_removed_factor = std::max(rep_.max_removed_factor, double(factor_[v]));
+  rep_.max_removed_factor = std::max(rep_.max_removed_factor, double(priority_[v]));
   touch_ring(p, queue, reprice_, nullptr);
 }
 
@@ -66,8 +66,8 @@ void Simplifier::touch_ring(const Planned& p, Queue& queue, std::vector<uint32_t
       // neighbour whose price fell waits behind where it belongs.
       flags_[u] |= kFlagStale;
       if (before > 0 && fan_area_[u] > 0) {
-        factor_[u] = static_cast<float>(factor_[u] * std::sqrt(fan_area_[u] / before));
-        queue.update(u, factor_[u]);
+        priority_[u] = static_cast<float>(priority_[u] * std::sqrt(fan_area_[u] / before));
+        queue.update(u, priority_[u]);
       }
     } else {
       reprice.push_back(u);
@@ -87,7 +87,7 @@ template <class Queue> void Simplifier::reprice(Queue& queue) {
     const uint32_t u = reprice_[i];
     const double f = repriced_[i].priority;
     note(u, repriced_[i]);
-    factor_[u] = static_cast<float>(f);
+    priority_[u] = static_cast<float>(f);
     flags_[u] &= ~kFlagStale;
     if (std::isfinite(f) && (!by_factor || f <= opt_.target.max_factor))
       queue.push(u, f);

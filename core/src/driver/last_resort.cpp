@@ -1,3 +1,5 @@
+#include <algorithm>
+
 #include "driver/simplifier.h"
 #include "queue/bucket_queue.h"
 #include "queue/heap_queue.h"
@@ -6,7 +8,7 @@ namespace vrs {
 
 template <class Queue> bool Simplifier::relax(Queue& queue, bool after_jump) {
   // A jump is met once by letting one corner disagree; the last resort is for a queue run dry.
-  if (last_resort_ || (after_jump && eased())) return false;
+  if (last_resort() || (after_jump && eased())) return false;
   // Nothing to gain when the kept border alone needs more than the target: on the input's
   // surface (Euler, manifold), any triangulation keeping its B border vertices has at least
   // 2B - 2V + F faces. Lifting vetoes there would only crumple the interior.
@@ -31,23 +33,25 @@ template <class Queue> bool Simplifier::relax(Queue& queue, bool after_jump) {
   // their thread at 10 %. Asked once eased, it keeps small outputs from folding (a plate with
   // 16 tunnels stops clean instead of crumpling); the price of a jump is measured from the
   // removals before the easing.
-  if (relax_steps_ == 0) relaxed_from_ = rep_.max_removed_factor;
+  if (!eased()) relaxed_from_ = rep_.max_removed_factor;
   // One switch for both sides: the input judges every new triangle (removal.cpp), the faces
   // replaced no longer do (vetoes.cpp). Only where the input is kept: not when the target is
   // asked at any cost.
   limits_.folds_judged_by_input = input_.kept();
   do {
-    if (relax_steps_++ == 0 && limits_.agreeing_corners > 2) {
+    if (!eased() && limits_.agreeing_corners > 2) {
+      relax_level_ = RelaxLevel::Eased;
       limits_.agreeing_corners = 2;
     } else {
+      relax_level_ = std::max(relax_level_, RelaxLevel::Eased);
       if (after_jump) return false;
-      last_resort_ = true;
+      relax_level_ = RelaxLevel::LastResort;
       limits_.agreeing_corners = 1;
       limits_.least_cost_filling = true;
       eval_.set_boundary_corner_cos(-1.0);
     }
     requeue(queue);
-  } while (queue.empty() && !last_resort_);
+  } while (queue.empty() && !last_resort());
   return !queue.empty();
 }
 
@@ -60,7 +64,7 @@ template <class Queue> void Simplifier::requeue(Queue& queue) {
     if (!removable(topo_.ring(v, tris, opt_.max_valence, ring))) continue;
     const Priced p = evaluate(v, ring);
     note(v, p);
-    factor_[v] = static_cast<float>(p.priority);
+    priority_[v] = static_cast<float>(p.priority);
     flags_[v] &= ~kFlagStale;
     if (queue.contains(v)) queue.erase(v);
     if (std::isfinite(p.priority)) queue.push(v, p.priority);

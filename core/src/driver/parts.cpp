@@ -156,23 +156,23 @@ void Simplifier::run_part(Part& part, double threshold, size_t cap, const uint8_
     plan_removal(p, /*areas=*/false); // made below for a removal (most plans are pushed back)
     if (wait.wanted()) {              // the plan is thrown away; the part waits for the next round
       chosen_[v] = hint;
-      part.queue.push(v, factor_[v]);
+      part.queue.push(v, priority_[v]);
       part.waits = true;
       break;
     }
     flags_[v] &= ~kFlagStale;
     if (!p.usable) {
-      factor_[v] = kInf; // queued again when its ring changes, as the whole queue does
+      priority_[v] = kInf; // queued again when its ring changes, as the whole queue does
       continue;
     }
     part.flip_refused += refuse(v, p.why);
     if (p.why != RejectCount) {
       ++part.rejected[p.why];
-      factor_[v] = kInf;
+      priority_[v] = kInf;
       continue;
     }
     if (p.stale) { // today's price: it goes only if it still leads, and stays under the price
-      factor_[v] = static_cast<float>(p.priority);
+      priority_[v] = static_cast<float>(p.priority);
       if (p.priority > threshold ||
           (!part.queue.empty() && p.priority > part.queue.front_factor())) {
         part.queue.push(v, p.priority);
@@ -190,7 +190,7 @@ void Simplifier::run_part(Part& part, double threshold, size_t cap, const uint8_
       room += topo_.growth(ring.v[i], topo_.valence(ring.v[i]) - gone + faces);
     }
     if (room > part.arena.end - part.arena.next) {
-      part.queue.push(v, factor_[v]);
+      part.queue.push(v, priority_[v]);
       part.full = true;
       break;
     }
@@ -198,8 +198,8 @@ void Simplifier::run_part(Part& part, double threshold, size_t cap, const uint8_
     flags_[v] |= kFlagRemoved;
     part.faces_removed += size_t(ring.faces - p.patch.count);
     ++part.removed;
-    part.max_factor = std::max(part.max_factor, double(factor_[v]));
-    factor_[v] = kInf;
+    part.max_factor = std::max(part.max_factor, double(priority_[v]));
+    priority_[v] = kInf;
     touch_ring(p, part.queue, part.reprice, frozen);
     rewrite(p);
     for (int i = 0; i < p.overflows; ++i)
@@ -210,7 +210,7 @@ void Simplifier::run_part(Part& part, double threshold, size_t cap, const uint8_
         part.flip_refused += refuse(u, priced.why);
         if (priced.why != RejectCount) ++part.rejected[priced.why];
       }
-      factor_[u] = static_cast<float>(priced.priority);
+      priority_[u] = static_cast<float>(priced.priority);
       flags_[u] &= ~kFlagStale;
       if (std::isfinite(priced.priority))
         part.queue.push(u, priced.priority);
@@ -249,8 +249,8 @@ bool Simplifier::run_cut(Parts& parts, size_t needed0) {
         const uint32_t first = parts.first(i), end = parts.end(i, n);
         part[i].queue.init(first, end - first);
         for (uint32_t v = first; v < end; ++v)
-          if (!frozen[v] && !(flags_[v] & kFlagRemoved) && std::isfinite(factor_[v]))
-            part[i].queue.push(v, factor_[v]);
+          if (!frozen[v] && !(flags_[v] & kFlagRemoved) && std::isfinite(priority_[v]))
+            part[i].queue.push(v, priority_[v]);
       },
       1);
   std::vector<size_t> arena_sizes(parts.count);
@@ -289,9 +289,9 @@ bool Simplifier::run_cut(Parts& parts, size_t needed0) {
       out.clear();
       for (size_t i = begin; i < end; ++i) {
         const uint32_t v = uint32_t(i * stride);
-        if (frozen[v] ? !(flags_[v] & kFlagRemoved) && std::isfinite(factor_[v])
+        if (frozen[v] ? !(flags_[v] & kFlagRemoved) && std::isfinite(priority_[v])
                       : part[parts.of(v)].queue.contains(v))
-          out.push_back(factor_[v]);
+          out.push_back(priority_[v]);
       }
     });
     prices.clear();
@@ -369,7 +369,7 @@ void Simplifier::price_frozen(const Parts& parts) {
   workers_.for_each(stale.size(), [&](size_t i) { priced[i] = price_now(stale[i]); });
   for (size_t i = 0; i < stale.size(); ++i) {
     note(stale[i], priced[i]);
-    factor_[stale[i]] = static_cast<float>(priced[i].priority);
+    priority_[stale[i]] = static_cast<float>(priced[i].priority);
     flags_[stale[i]] &= ~kFlagStale;
   }
 }

@@ -90,7 +90,7 @@ template <class Queue> void Simplifier::plan_batch(size_t count, const Queue& qu
       const uint32_t u = i < 0 ? p.v : p.ring.v[i];
       queue.prefetch(u);
       prefetch(&flags_[u]);
-      prefetch(&factor_[u]);
+      prefetch(&priority_[u]);
       if (lazy_) prefetch(&fan_area_[u]);
     }
   };

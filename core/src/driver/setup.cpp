@@ -151,7 +151,7 @@ void Simplifier::first_prices(UninitVector<uint8_t>& kinds, UninitVector<FirstPr
     planner_.set_carried(&carried_);
   }
   jump_floor_ = 1e-3 * bounding_box_diagonal(mesh_);
-  fill_on(&workers_, factor_, n, std::numeric_limits<float>::infinity());
+  fill_on(&workers_, priority_, n, std::numeric_limits<float>::infinity());
   faces_ = faces0_ = t.size() / 3;
   const TargetKind tk = opt_.target.kind;
   target_faces_ = tk == TargetKind::Faces ? opt_.target.faces
@@ -361,7 +361,7 @@ void Simplifier::prepare() {
         c.flip_refused += refuse(v, p.why);
         if (p.why != RejectCount) ++c.rejected[p.why];
       }
-      factor_[v] = static_cast<float>(p.priority);
+      priority_[v] = static_cast<float>(p.priority);
     }
   });
   for (const Counts& c : counts) {

@@ -56,9 +56,9 @@ template <class Queue> void Simplifier::run(Queue& queue) {
     auto& out = found[begin / kBlock];
     double& f_max = highest[begin / kBlock];
     for (size_t i = begin; i < end; ++i) {
-      if (std::isfinite(factor_[i])) f_max = std::max(f_max, double(factor_[i]));
+      if (std::isfinite(priority_[i])) f_max = std::max(f_max, double(priority_[i]));
       const uint32_t v = queue_order(i);
-      if (std::isfinite(factor_[v]) && (!by_factor || factor_[v] <= opt_.target.max_factor))
+      if (std::isfinite(priority_[v]) && (!by_factor || priority_[v] <= opt_.target.max_factor))
         out.push_back(v);
     }
   });
@@ -67,7 +67,7 @@ template <class Queue> void Simplifier::run(Queue& queue) {
   queue.init(n, map, &workers_);
   batch_.resize(kBatch);
   batch_ids_.resize(kBatch);
-  queue.fill(found, factor_.data(), &workers_);
+  queue.fill(found, priority_.data(), &workers_);
 
   const size_t queued0 = queue.size();
   const bool counts = opt_.target.kind == TargetKind::Faces ||
@@ -97,7 +97,7 @@ template <class Queue> void Simplifier::run(Queue& queue) {
       // A count target asks for more than the table's range allows: spread the remaining
       // vertices over a new range. Amortized: at most once per quarter of the queue popped.
       if (pops_since_respread >= queue.size() / 4) {
-        queue.respread(factor_.data());
+        queue.respread(priority_.data());
         pops_since_respread = 0;
       }
     }
@@ -128,16 +128,16 @@ template <class Queue> void Simplifier::run(Queue& queue) {
         continue;
       }
       if (p.stale) { // its price is today's only now: it goes only if it still leads
-        factor_[v] = static_cast<float>(p.priority);
+        priority_[v] = static_cast<float>(p.priority);
         if (by_factor && !(p.priority <= opt_.target.max_factor)) continue;
-        if (!queue.leads(p.priority, p.from)) {
+        if (!queue.still_cheapest(p.priority, p.from)) {
           queue.push(v, p.priority);
           continue;
         }
       }
-      if (counts && jumps(p.stale ? p.priority : double(factor_[v]))) {
+      if (counts && jumps(p.stale ? p.priority : double(priority_[v]))) {
         // The cheapest removal left is far dearer than any so far: not at any cost (below).
-        jump_price_ = p.stale ? p.priority : double(factor_[v]);
+        jump_price_ = p.stale ? p.priority : double(priority_[v]);
         jump_from_ = jump_base();
         queue.push(v, jump_price_);
         break;
@@ -156,7 +156,7 @@ template <class Queue> void Simplifier::run(Queue& queue) {
     // Most of what is left refused only by a corner's input normal (threads, thin walls,
     // tunnels): take those, one corner facing away allowed, before the cheapest rest drops a
     // part.
-    if (counts && relax_steps_ == 0 && opt_.relax_to_reach_target && flip_refused_ > queue.size() &&
+    if (counts && !eased() && opt_.relax_to_reach_target && flip_refused_ > queue.size() &&
         relax(queue, false))
       continue;
     if (jump_price_ > 0) {

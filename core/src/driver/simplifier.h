@@ -110,7 +110,7 @@ class Simplifier {
   bool removable(VertexKind k) const {
     return k == VertexKind::Interior ||
            (simplify_boundary_ &&
-            (k == VertexKind::Boundary || (k == VertexKind::Corner && last_resort_)));
+            (k == VertexKind::Boundary || (k == VertexKind::Corner && last_resort())));
   }
   bool target_met() const;
   float progress_fraction(size_t queued, size_t queued0) const;
@@ -215,15 +215,18 @@ class Simplifier {
   Report& rep_;
   Evaluator eval_;
   RemovalLimits limits_;
-  bool last_resort_ = false; // see relax()
-  int relax_steps_ = 0;      // relax() calls so far: 1 lets one corner disagree, 2 the rest
-  bool eased() const { return relax_steps_ > 0; }
+  // How far relax() has eased the vetoes: not yet, one corner of a new triangle may face away
+  // from the input's normal, or the last resort (see relax()).
+  enum class RelaxLevel : uint8_t { Strict, Eased, LastResort };
+  RelaxLevel relax_level_ = RelaxLevel::Strict;
+  bool eased() const { return relax_level_ != RelaxLevel::Strict; }
+  bool last_resort() const { return relax_level_ == RelaxLevel::LastResort; }
   // Options::max_price_jump: the least price a jump is measured from (1e-3 of the diagonal),
   // and, once the run stopped at one, the price and the removal it was measured from.
   double jump_floor_ = 0, jump_price_ = 0, jump_from_ = 0;
   // The dearest removal made before the first relax(): relaxed removals are measured from it.
   // Measured from the dearest so far, a relaxed run climbed by small steps from one removal
-  // to the next and ate a bolt's head into a cone (price 0.6 before, 224 at the end).
+  // to the next and ate a bolt's head into a cone.
   double relaxed_from_ = 0;
   double jump_base() const { return eased() ? relaxed_from_ : rep_.max_removed_factor; }
   // Once eased, half the jump: at the whole of it the eased passes' last removals flattened
@@ -235,15 +238,16 @@ class Simplifier {
   // Not before 16 removals (a few are no history to jump from), nor under an error bound (it
   // says itself how far a removal may go).
   bool jumps(double price) const {
-    return opt_.max_price_jump > 0 && opt_.tuning.priority == Priority::LocalError && rep_.removed >= 16 &&
-           !(opt_.max_error > 0 && std::isfinite(opt_.max_error)) &&
+    return opt_.max_price_jump > 0 && opt_.tuning.priority == Priority::LocalError &&
+           rep_.removed >= 16 && !(opt_.max_error > 0 && std::isfinite(opt_.max_error)) &&
            price > jump_bar() * std::max(jump_base(), jump_floor_);
   }
   bool simplify_boundary_ = opt_.simplify_boundary; // or on when the kept border needs it
   // Queued neighbours of a removal are re-priced when popped. The paper's factor is the plane
   // alone, cheap to make at once: lazy only pays where the price is a plan, and on a large
   // mesh (Tuning::lazy_from_faces).
-  const bool lazy_ = opt_.tuning.lazy_reevaluation && opt_.tuning.priority == Priority::LocalError &&
+  const bool lazy_ = opt_.tuning.lazy_reevaluation &&
+                     opt_.tuning.priority == Priority::LocalError &&
                      mesh_.face_count() >= opt_.tuning.lazy_from_faces;
   Topology topo_;
   Workers workers_{opt_.threads > 0 ? opt_.threads : hardware_threads()};
@@ -255,7 +259,7 @@ class Simplifier {
   std::vector<uint32_t> committed_; // batch_ entries accounted, to rewrite
   std::vector<Priced> repriced_;
   Planner planner_{eval_, topo_, mesh_.triangles.data(), nullptr, limits_, {}, false};
-  UninitVector<float> factor_;
+  UninitVector<float> priority_;
   // Written whole by the workers at the first prices (no serial fill first).
   UninitVector<float> fan_area_; // area of each vertex's faces (kept up to date with lazy_)
   UninitVector<float> normals_;  // unit vertex normals of the input surface, 3 a vertex

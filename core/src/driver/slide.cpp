@@ -212,7 +212,7 @@ uint32_t Simplifier::slide_choice(uint32_t v, const Ring& ring) const {
   struct Near {
     double in;
     uint32_t u;
-    uint8_t doubts; // veto_triangle's: corners unsure of the side the input faces
+    uint8_t unsure; // veto_triangle's: corners unsure of the side the input faces
     double far;     // squared: the farthest of the input's points from the fan
     bool operator<(const Near& o) const { return in != o.in ? in < o.in : u < o.u; }
   };
@@ -230,10 +230,10 @@ uint32_t Simplifier::slide_choice(uint32_t v, const Ring& ring) const {
     fan_patch(ring, eval_.position(u), eval_, trial);
     apexed.v[k] = u;
     bool ok = true;
-    uint8_t doubts = 0;
+    uint8_t unsure = 0;
     for (int i = 0; i < k && ok; ++i)
       ok = veto_triangle(apexed, trial, trial.tri[i], replaced, normals_.data(), strict, false,
-                         &doubts) == RejectCount;
+                         &unsure) == RejectCount;
     if (!ok) continue;
     double stop = std::numeric_limits<double>::infinity();
     if (nears >= kSlideMeasured) {
@@ -242,7 +242,7 @@ uint32_t Simplifier::slide_choice(uint32_t v, const Ring& ring) const {
     }
     double far = 0;
     const double in = slide_in(points, u, trial, &far, stop);
-    if (in <= stop) near[nears++] = {in, u, doubts, far}; // measured whole, so far is too
+    if (in <= stop) near[nears++] = {in, u, unsure, far}; // measured whole, so far is too
   }
   if (nears == 0) return kNone;
   std::sort(near.begin(), near.begin() + nears);
@@ -253,7 +253,7 @@ uint32_t Simplifier::slide_choice(uint32_t v, const Ring& ring) const {
   const double in_now = slide_in(points, kNone, now, &far_now);
   double best = std::numeric_limits<double>::infinity();
   uint32_t chosen = kNone;
-  uint8_t doubts = 0;
+  uint8_t unsure = 0;
   for (int ni = 0; ni < std::min(nears, kSlideMeasured); ++ni) {
     const uint32_t u = near[ni].u;
     fan_patch(ring, eval_.position(u), eval_, trial);
@@ -270,7 +270,7 @@ uint32_t Simplifier::slide_choice(uint32_t v, const Ring& ring) const {
     if (std::max(far, near[ni].far) > far_now) continue;
     best = s;
     chosen = u;
-    doubts = near[ni].doubts;
+    unsure = near[ni].unsure;
   }
   if (chosen != kNone) {
     fan_patch(ring, eval_.position(chosen), eval_, trial);
@@ -280,7 +280,7 @@ uint32_t Simplifier::slide_choice(uint32_t v, const Ring& ring) const {
     // area without it. Only where the run built its hierarchy (the CAD parts, where those
     // fans are): elsewhere refused, as building it would take 16 bytes a face at the peak.
     // The fan's triangle i stands where ring face i did.
-    if (!folds && doubts)
+    if (!folds && unsure)
       folds = !slide_whole_input_ ||
               input_.folds(trial, eval_, 0, InputSurface::kGridMax,
                            slots.triangles(ring.faces, [&](int i) { return ring.f[i]; }));
@@ -294,7 +294,7 @@ void Simplifier::slide() {
       !face_bound_.empty() || !fans_.empty() || slide_target_.size() != flags_.size())
     return;
   // The run's own per-vertex prices are done with: their memory goes to the slide's.
-  UninitVector<float>().swap(factor_);
+  UninitVector<float>().swap(priority_);
   UninitVector<float>().swap(fan_area_);
   UninitVector<uint8_t>().swap(chosen_);
   slide_whole_input_ = input_.built(); // the run's, fixed: no slide builds it

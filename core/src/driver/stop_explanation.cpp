@@ -123,7 +123,7 @@ void Simplifier::explain_stop() {
     return;
   }
   const Remaining r = count_remaining();
-  rep_.stop_detail = explain_remaining(r, simplify_boundary_, last_resort_);
+  rep_.stop_detail = explain_remaining(r, simplify_boundary_, last_resort());
   rep_.stop_cause = rep_.stop == StopReason::ErrorBound ? StopCause::ErrorBound : main_cause(r);
 }
 

@@ -207,7 +207,7 @@ double patch_error(uint32_t v, const Ring& ring, const Patch& patch, const Evalu
   // Off creases the local price alone: priced so everywhere, a smooth mesh took more time for
   // more error, and wherever a corner was turned from its triangle (coarse organic meshes too)
   // small outputs lost accuracy and their target.
-  if (!(patch.corner_doubts & kCornerOnCrease) || patch.count == 0) return local;
+  if (!(patch.unsure_corners & kCornerOnCrease) || patch.count == 0) return local;
   const double moved = moved_surface(fan, ring, patch, c, centroid2.data());
   return std::max(local, std::sqrt(local * moved / reference_area));
 }

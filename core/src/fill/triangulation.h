@@ -30,9 +30,9 @@ struct Patch {
   // With an error bound tracked (error_bound.h): each new triangle's certified bound.
   std::array<float, kMaxRing> bound;
   // Set by the shape veto (vetoes.h): why some corner's input normal cannot vouch for its new
-  // triangle (CornerDoubt bits). Then the planner asks the input itself; on a crease the price
+  // triangle (UnsureCorner bits). Then the planner asks the input itself; on a crease the price
   // counts the surface moved too (patch_error).
-  uint8_t corner_doubts = 0;
+  uint8_t unsure_corners = 0;
   // The candidate (candidates.h) that made it, as a hint for the same ring's next plan
   // (Planner::plan); kNoCandidate: the least-cost filling, a seam's sides, or one ranked after a
   // candidate the mesh's other faces refused.
@@ -40,7 +40,7 @@ struct Patch {
 };
 constexpr uint8_t kNoCandidate = 255;
 
-enum CornerDoubt : uint8_t {
+enum UnsureCorner : uint8_t {
   kCornerTurned = 1,   // its normal more than 45 degrees from the triangle
   kCornerOnCrease = 2, // its input faces spread more than 30 degrees: a crease, a rim, a thin wall
 };

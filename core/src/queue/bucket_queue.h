@@ -49,8 +49,8 @@ class BucketQueue {
   int interval(uint32_t v) const { return int(node_[v].where); }
   // Whether a vertex of this factor, pushed now, would be in the lowest non-empty interval or
   // no later than `from` (the interval it was read off): a vertex popped with a stale priority
-  // and priced again is removed at once when it still leads, else pushed back.
-  bool leads(double factor, int from) const {
+  // and priced again is removed at once when it is still the cheapest, else pushed back.
+  bool still_cheapest(double factor, int from) const {
     return size_ == 0 || map_.interval_of(factor) <= std::max(lowest(), from);
   }
 

@@ -39,7 +39,9 @@ class HeapQueue {
     return 1;
   }
   int interval(uint32_t) const { return -1; }
-  bool leads(double factor, int) const { return heap_.empty() || factor <= heap_[0].factor; }
+  bool still_cheapest(double factor, int) const {
+    return heap_.empty() || factor <= heap_[0].factor;
+  }
   void respread(const float*) {} // already exact
   const IntervalMap& map() const { return map_; }
 

@@ -74,13 +74,13 @@ Reject Planner::plan(uint32_t v, const Ring& ring, Vec3 n, Patch& out, double& c
   if (k < 3 && !(k == 2 && !ring.closed())) return RejectFold;
   project(v, ring, n, *eval_, out);
   const FaceNormals& replaced = out.face_n;
-  // `shaped`: the shape veto already passed `out` (its corner doubts set).
+  // `shaped`: the shape veto already passed `out` (its corner unsure set).
   auto vetoed = [&](bool plane_angle, bool shaped = false) {
     // Topology first (it cannot change with the projection), then shape.
     Reject why = check_topology ? veto_topology(ring, out, open, *topo_, tris_) : RejectCount;
-    if (!shaped) out.corner_doubts = 0;
+    if (!shaped) out.unsure_corners = 0;
     if (why == RejectCount && !shaped)
-      why = veto_shape(ring, out, replaced, normals_, *limits_, plane_angle, &out.corner_doubts);
+      why = veto_shape(ring, out, replaced, normals_, *limits_, plane_angle, &out.unsure_corners);
     // Judged against the input where the mesh look-ups are (the plan that commits), not in
     // every pricing pass: it walks every point the old faces carry (a tenth of the time).
     if (why == RejectCount && check_topology && carried_ &&
@@ -102,8 +102,8 @@ Reject Planner::plan(uint32_t v, const Ring& ring, Vec3 n, Patch& out, double& c
       const uint64_t turned =
           turned_.triangles(out.count, [&](int t) { return ring.f[out.from[t][0]]; });
       const bool folds = eased ? input_->folds(out, *eval_, 0, InputSurface::kGridMax, turned)
-                               : (out.corner_doubts && input_->folds(out, *eval_, input_covers_,
-                                                                     kInputCheckSide, turned)) ||
+                               : (out.unsure_corners && input_->folds(out, *eval_, input_covers_,
+                                                                      kInputCheckSide, turned)) ||
                                      large_triangles_fold(out, turned);
       if (folds) why = RejectFoldOver;
     }
@@ -197,11 +197,11 @@ Reject Planner::plan(uint32_t v, const Ring& ring, Vec3 n, Patch& out, double& c
     }
     double priced = std::numeric_limits<double>::quiet_NaN();
     if (std::exchange(first, false)) {
-      // The shape veto alone first (the corners' doubts price a crease): a plan that will not
+      // The shape veto alone first (the corners' unsure price a crease): a plan that will not
       // lead is not asked the mesh's vetoes. The same price as after them (they write nothing).
-      out.corner_doubts = 0;
+      out.unsure_corners = 0;
       if (veto_shape(ring, out, replaced, normals_, *limits_, c == 0 || on_plane_,
-                     &out.corner_doubts) == RejectCount) {
+                     &out.unsure_corners) == RejectCount) {
         priced = price_.exact(v, ring, out);
         if (priced > lead) {
           out.candidate = uint8_t(c);

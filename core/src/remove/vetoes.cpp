@@ -50,7 +50,7 @@ Reject veto_topology(const Ring& ring, const Patch& patch, OpenRing open, const 
 
 Reject veto_triangle(const Ring& ring, const Patch& patch, std::array<uint8_t, 3> tri,
                      const FaceNormals& old_n, const float* surface_normals,
-                     const RemovalLimits& limits, bool plane_angle, uint8_t* doubts) {
+                     const RemovalLimits& limits, bool plane_angle, uint8_t* unsure) {
   constexpr double kSureCos = 0.7, kCreaseSpreadSin = 0.5;
   const int k = ring.verts;
   const auto& q = patch.q;
@@ -64,8 +64,8 @@ Reject veto_triangle(const Ring& ring, const Patch& patch, std::array<uint8_t, 3
     const float* sn = surface_normals + 4 * size_t(ring.v[tri[e]]);
     const double d = dot(face, Vec3{sn[0], sn[1], sn[2]});
     agreeing += d > 0;
-    if (doubts && !(d >= kSureCos)) *doubts |= kCornerTurned;
-    if (doubts && sn[3] > kCreaseSpreadSin) *doubts |= kCornerOnCrease;
+    if (unsure && !(d >= kSureCos)) *unsure |= kCornerTurned;
+    if (unsure && sn[3] > kCreaseSpreadSin) *unsure |= kCornerOnCrease;
   }
   if (agreeing < limits.agreeing_corners) return RejectFlip;
   if (limits.folds_judged_by_input) return RejectCount;
@@ -91,10 +91,10 @@ Reject veto_triangle(const Ring& ring, const Patch& patch, std::array<uint8_t, 3
 
 Reject veto_shape(const Ring& ring, const Patch& patch, const FaceNormals& old_n,
                   const float* surface_normals, const RemovalLimits& limits, bool plane_angle,
-                  uint8_t* doubts) {
+                  uint8_t* unsure) {
   for (int t = 0; t < patch.count; ++t) {
     const Reject why = veto_triangle(ring, patch, patch.tri[t], old_n, surface_normals, limits,
-                                     plane_angle, doubts);
+                                     plane_angle, unsure);
     if (why != RejectCount) return why;
   }
   return RejectCount;

@@ -58,19 +58,19 @@ Reject veto_topology(const Ring& ring, const Patch& patch, OpenRing open, const 
 // to that plane.
 // `replaced`: the unit normals of the faces the patch replaces (a plan's Patch::face_n, the same
 // for every candidate of one plan); not read once limits.folds_judged_by_input.
-// `doubts` (when given, of a patch no veto refuses): the CornerDoubt bits of corners that cannot
+// `unsure` (when given, of a patch no veto refuses): the UnsureCorner bits of corners that cannot
 // vouch for their triangle, their normal more than 45 degrees from it or their faces spreading
 // more than 30 degrees about them (a crease, a rim, a thin wall): there the planner asks the
 // input itself. Told here, where the corners are compared anyway, not by a second pass.
 using FaceNormals = UnsetArray<Vec3, kMaxRing>;
 Reject veto_shape(const Ring& ring, const Patch& patch, const FaceNormals& replaced,
                   const float* surface_normals, const RemovalLimits& limits, bool plane_angle,
-                  uint8_t* doubts = nullptr);
+                  uint8_t* unsure = nullptr);
 
 // veto_shape for one new triangle (ring positions `tri`, counter-clockwise).
 Reject veto_triangle(const Ring& ring, const Patch& patch, std::array<uint8_t, 3> tri,
                      const FaceNormals& replaced, const float* surface_normals,
-                     const RemovalLimits& limits, bool plane_angle, uint8_t* doubts = nullptr);
+                     const RemovalLimits& limits, bool plane_angle, uint8_t* unsure = nullptr);
 
 // Error bound (error_bound.h): the patch must project one-to-one with the fan it replaces, and
 // every new face's certified bound (written into patch.bound) must stay within
