@@ -12,6 +12,7 @@ cache=${VRS_CACHE:-/var/cache/vrsimplify}
 stage=$top/build/docs-src
 rm -rf "$stage" && mkdir -p "$stage/bench" "$stage/fuzz/open"
 cp "$top"/docs/*.md "$stage/"
+cp -r "$top/docs/start" "$top/docs/guides" "$stage/"
 cp -r "$top/docs/images" "$stage/"
 cp "$top"/bench/*.md "$stage/bench/"
 cp -r "$top/bench/renders" "$top/bench/plots" "$stage/bench/"
