@@ -1,12 +1,10 @@
 // A vector whose resize() leaves new elements unwritten: large arrays the workers fill block
-// by block (a value-initialized resize is a serial memset of the whole array first).
+// by block (a value-initialized resize is a serial memset of the whole array first; fill_on in
+// workers.h).
 #pragma once
 
-#include <algorithm>
 #include <memory>
 #include <vector>
-
-#include "base/workers.h"
 
 namespace vrs {
 
@@ -21,13 +19,5 @@ template <class T> struct DefaultInit : std::allocator<T> {
 };
 
 template <class T> using UninitVector = std::vector<T, DefaultInit<T>>;
-
-// v holds n copies of x, written block by block on the workers (null: on the caller).
-template <class T> void fill_on(Workers* workers, UninitVector<T>& v, size_t n, const T& x) {
-  v.resize(n);
-  for_each_block(workers, n, 65536, [&](size_t begin, size_t end) {
-    std::fill(v.begin() + begin, v.begin() + end, x);
-  });
-}
 
 } // namespace vrs

@@ -15,6 +15,8 @@
 #include <utility>
 #include <vector>
 
+#include "base/uninitialized.h"
+
 namespace vrs {
 
 class Workers {
@@ -112,5 +114,13 @@ inline std::pair<size_t, size_t> range_of(size_t r, size_t ranges, size_t n) {
 
 // The number of threads Options::threads = 0 stands for: the machine's hardware threads.
 int hardware_threads();
+
+// v holds n copies of x, written block by block on the workers (null: on the caller).
+template <class T> void fill_on(Workers* workers, UninitVector<T>& v, size_t n, const T& x) {
+  v.resize(n);
+  for_each_block(workers, n, 65536, [&](size_t begin, size_t end) {
+    std::fill(v.begin() + begin, v.begin() + end, x);
+  });
+}
 
 } // namespace vrs

@@ -8,6 +8,7 @@
 #include <cstdint>
 #include <vector>
 
+#include "base/workers.h"
 #include "evaluate/evaluation.h"
 #include "fill/triangulation.h"
 #include "mesh/topology.h"

@@ -15,6 +15,7 @@
 #include <vector>
 
 #include "base/uninitialized.h"
+#include "base/workers.h"
 #include "evaluate/evaluation.h"
 #include "fill/triangulation.h"
 

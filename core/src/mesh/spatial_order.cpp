@@ -7,6 +7,7 @@
 #include <limits>
 
 #include "base/uninitialized.h"
+#include "base/workers.h"
 
 namespace vrs {
 

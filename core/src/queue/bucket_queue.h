@@ -10,6 +10,7 @@
 #include <vector>
 
 #include "base/uninitialized.h"
+#include "base/workers.h"
 #include "mesh/topology.h"
 #include "queue/interval_map.h"
 
