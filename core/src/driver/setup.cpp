@@ -167,7 +167,7 @@ void Simplifier::first_prices(UninitVector<uint8_t>& kinds, UninitVector<FirstPr
   // slots); the caller counts them in vertex order.
   kinds.resize(n);
   first.resize(n);
-  slide_target_.assign(n, 0);
+  slide_.target.assign(n, 0);
   workers_.for_each(
       n,
       [&](size_t i) {
@@ -180,7 +180,7 @@ void Simplifier::first_prices(UninitVector<uint8_t>& kinds, UninitVector<FirstPr
         const Along where = along(v, ring, seam);
         // A place a kept vertex may slide onto after the run (slide.cpp): an interior vertex
         // on no constrained edge (no seam, crease or orientation border through it).
-        slide_target_[v] = kind == VertexKind::Interior && where == Along::Free;
+        slide_.target[v] = kind == VertexKind::Interior && where == Along::Free;
         if (where == Along::Kept)
           kinds[v] |= kKeptOnConstraints;
         else {
@@ -314,10 +314,10 @@ void Simplifier::prepare() {
   if (split_fans_apart(kinds)) first_prices(kinds, first);
   // Its corner in the input (the first), for the per-corner data of the faces it then joins.
   if (!corner_source_.empty()) {
-    slide_corner_.assign(slide_target_.size(), kNone); // split fans: more vertices than n
+    slide_.corner.assign(slide_.target.size(), kNone); // split fans: more vertices than n
     for (size_t i = 0; i < t.size(); ++i)
-      if (slide_target_[t[i]] && slide_corner_[t[i]] == kNone)
-        slide_corner_[t[i]] = corner_source_[i];
+      if (slide_.target[t[i]] && slide_.corner[t[i]] == kNone)
+        slide_.corner[t[i]] = corner_source_[i];
   }
   // Counted in blocks on the workers (each vertex writes only its own flags and price), the
   // blocks' counts added in order.

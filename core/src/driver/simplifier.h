@@ -14,6 +14,7 @@
 #include "base/workers.h"
 #include "driver/parts.h"
 #include "driver/scheduler.h"
+#include "driver/slide.h"
 #include "driver/stop_explanation.h"
 #include "driver/vertex_flags.h"
 #include "evaluate/carried_points.h"
@@ -64,47 +65,29 @@ class Simplifier {
   void record_removals(std::vector<uint32_t>* log) { removal_log_ = log; }
   void standing_faces(std::vector<uint32_t>& slots, std::vector<uint32_t>& corners) const;
   template <class Queue> void run(Queue& queue); // simplifier.cpp
-  void compact();                                // output.cpp
-  void slide();                                  // slide.cpp
-  // Its steps: the fans to try; the vertices they may ask about, each a slot with its input
-  // faces' corners (slide_first_, slide_faces_) and a third of their area; a fan's choice, and
-  // writing it.
-  std::vector<uint32_t> slide_gate();
-  void slide_index(const std::vector<uint32_t>& fans);
-  uint32_t slide_choice(uint32_t v, const Ring& ring) const;
-  void slide_commit(uint32_t v, uint32_t u, const Ring& ring);
-  bool slide_local(uint32_t v, const Ring& ring, LocalInput& in) const;
-  int slide_slot(uint32_t v) const { // -1: none
-    const uint64_t word = slide_bits_[v >> 6], bit = uint64_t(1) << (v & 63);
-    return word & bit ? int(slide_rank_[v >> 6] + uint32_t(__builtin_popcountll(word & (bit - 1))))
-                      : -1;
-  }
-  // Face slot f is, untouched, half of a polygon the caller keeps (Options::polygon_faces).
-  bool polygon_face(uint32_t f) const;
-  double slide_area(uint32_t v) const {
-    const int k = slide_slot(v);
-    return k >= 0 ? slide_area_[size_t(k)] : 0.0;
-  }
-  std::vector<uint64_t> slide_bits_; // a bit a vertex: it has a slot
-  std::vector<uint32_t> slide_rank_; // per 64 vertices: the slots before them
-  bool slide_whole_input_ = false;   // the input's hierarchy built by the run
-  std::vector<float> slide_area_;
-  // Per slot, its input faces: numbers into InputSurface's faces, which stay in place since
-  // no slide builds the hierarchy that reorders them (slide_whole_input_).
-  std::vector<uint32_t> slide_first_, slide_faces_;
-  // Per vertex: whether a kept vertex may slide onto it (setup.cpp, slide.cpp); with
-  // per-corner data, one of its input corners (else empty: 4 bytes a vertex at the peak).
-  std::vector<uint8_t> slide_target_;
-  std::vector<uint32_t> slide_corner_;
+  void compact();                                // compact.cpp
+  // After the run: kept vertices give their place to removed ones nearer the input.
+  void slide(); // slide.cpp
   double parallel_seconds() const { return workers_.parallel_seconds(); }
   double span_seconds(int threads) const { return workers_.span_seconds(threads); }
   // Why the remaining vertices stay, when the target was not met: Report::stop_detail and
   // stop_cause (stop_explanation.cpp).
   void explain_stop();
-  Remaining count_remaining() const;
-  bool next_to_nonfinite(uint32_t v, const Ring& ring) const; // stop_explanation.cpp
 
  private:
+  Remaining count_remaining() const;
+  bool next_to_nonfinite(uint32_t v, const Ring& ring) const; // stop_explanation.cpp
+  // The slide's steps (slide.cpp): the fans to try; the vertices they may ask about, each a
+  // slot with its input faces' corners and a third of their area; a fan's choice, and writing
+  // it.
+  std::vector<uint32_t> slide_gate();
+  void slide_index(const std::vector<uint32_t>& fans);
+  uint32_t slide_choice(uint32_t v, const Ring& ring) const;
+  void slide_commit(uint32_t v, uint32_t u, const Ring& ring);
+  bool slide_local(uint32_t v, const Ring& ring, LocalInput& in) const;
+  // Face slot f is, untouched, half of a polygon the caller keeps (Options::polygon_faces).
+  bool polygon_face(uint32_t f) const;
+  SlideState slide_;
   // A vertex of a single triangle goes with it only in the last-resort pass: that cuts a
   // triangle off the outline.
   bool removable(VertexKind k) const {

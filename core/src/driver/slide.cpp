@@ -120,10 +120,10 @@ bool Simplifier::slide_local(uint32_t v, const Ring& ring, LocalInput& in) const
   std::vector<uint32_t>& faces = in.face;
   faces.clear();
   auto add = [&](uint32_t p) {
-    const int k = slide_slot(p);
+    const int k = slide_.slot(p);
     if (k >= 0)
-      faces.insert(faces.end(), slide_faces_.begin() + slide_first_[k],
-                   slide_faces_.begin() + slide_first_[k + 1]);
+      faces.insert(faces.end(), slide_.faces.begin() + slide_.first[k],
+                   slide_.faces.begin() + slide_.first[k + 1]);
   };
   add(v);
   for (int i = 0; i < ring.verts; ++i)
@@ -162,7 +162,7 @@ uint32_t Simplifier::slide_choice(uint32_t v, const Ring& ring) const {
     old_n[i] = cross(now.q[(i + 1) % k] - now.q[i], now.q[k] - now.q[i]);
   thread_local std::vector<SlidePoint> points; // v first, then the carried points
   points.clear();
-  auto gather = [&](uint32_t p) { points.push_back({eval_.position(p), slide_area(p), p}); };
+  auto gather = [&](uint32_t p) { points.push_back({eval_.position(p), slide_.area_of(p), p}); };
   gather(v);
   carried_.for_each(ring, gather);
   // The input's planes around (each carried point's, and v's: its input normal, weighted by
@@ -189,10 +189,10 @@ uint32_t Simplifier::slide_choice(uint32_t v, const Ring& ring) const {
   const bool fan_turned = slots.any() && slots(ring.f[0]);
   for (auto p = points.begin() + 1; p != points.end(); ++p) {
     const uint32_t u = p->id;
-    if ((flags_[u] & kFlagLocked) || !slide_target_[u]) continue;
+    if ((flags_[u] & kFlagLocked) || !slide_.target[u]) continue;
     // Its per-corner data must come from a face wound as the fan's (an orientation border is
     // a constrained edge, but a point can be handed across one by a removal along it).
-    if (slots.any() && bool(turned_[slide_corner_[u] / 3]) != fan_turned) continue;
+    if (slots.any() && bool(turned_[slide_.corner[u] / 3]) != fan_turned) continue;
     const std::pair<double, uint32_t> e{quadric(p->x), u};
     if (tried < kSlideTries) {
       tries[tried++] = e;
@@ -281,7 +281,7 @@ uint32_t Simplifier::slide_choice(uint32_t v, const Ring& ring) const {
     // fans are): elsewhere refused, as building it would take 16 bytes a face at the peak.
     // The fan's triangle i stands where ring face i did.
     if (!folds && unsure)
-      folds = !slide_whole_input_ ||
+      folds = !slide_.whole_input ||
               input_.folds(trial, eval_, 0, InputSurface::kGridMax,
                            slots.triangles(ring.faces, [&](int i) { return ring.f[i]; }));
     if (folds) chosen = kNone;
@@ -291,13 +291,13 @@ uint32_t Simplifier::slide_choice(uint32_t v, const Ring& ring) const {
 
 void Simplifier::slide() {
   if (!opt_.slide || opt_.mode != Mode::Surface3D || !carried_.active() || !input_.kept() ||
-      !face_bound_.empty() || !fans_.empty() || slide_target_.size() != flags_.size())
+      !face_bound_.empty() || !fans_.empty() || slide_.target.size() != flags_.size())
     return;
   // The run's own per-vertex prices are done with: their memory goes to the slide's.
   UninitVector<float>().swap(priority_);
   UninitVector<float>().swap(fan_area_);
   UninitVector<uint8_t>().swap(chosen_);
-  slide_whole_input_ = input_.built(); // the run's, fixed: no slide builds it
+  slide_.whole_input = input_.built(); // the run's, fixed: no slide builds it
   std::vector<uint32_t> pending = slide_gate();
   slide_index(pending);
   // Rounds: the pending vertices in order, each taken when its fan shares no vertex with one
@@ -356,7 +356,7 @@ void Simplifier::slide_commit(uint32_t v, uint32_t u, const Ring& ring) {
     for (int c = 0; c < 3; ++c)
       if (tris[3 * face + c] == v) {
         tris[3 * face + c] = u;
-        if (!corner_source_.empty()) corner_source_[3 * size_t(face) + c] = slide_corner_[u];
+        if (!corner_source_.empty()) corner_source_[3 * size_t(face) + c] = slide_.corner[u];
       }
     topo_.add_face(u, face);
     order_.face_old[face] |= kRewrittenSlot;
@@ -434,17 +434,17 @@ void Simplifier::slide_index(const std::vector<uint32_t>& fans) {
   // time): a slot found in two reads, not a search of a sorted list (that search was most of
   // the index's time at 1.2 M faces, all of it on one thread).
   const size_t words = (flags_.size() + 63) / 64;
-  slide_bits_.assign(words, 0);
+  slide_.bits.assign(words, 0);
   for (uint32_t v : ids)
-    slide_bits_[v >> 6] |= uint64_t(1) << (v & 63);
+    slide_.bits[v >> 6] |= uint64_t(1) << (v & 63);
   std::vector<uint32_t>().swap(ids);
-  slide_rank_.assign(words + 1, 0);
+  slide_.rank.assign(words + 1, 0);
   for (size_t w = 0; w < words; ++w)
-    slide_rank_[w + 1] = slide_rank_[w] + uint32_t(__builtin_popcountll(slide_bits_[w]));
-  const size_t slots = slide_rank_.back();
+    slide_.rank[w + 1] = slide_.rank[w] + uint32_t(__builtin_popcountll(slide_.bits[w]));
+  const size_t slots = slide_.rank.back();
   const uint32_t* f = input_.faces().data();
   const size_t faces = input_.faces().size() / 3;
-  auto asked = [&](uint32_t v) { return slide_slot(v) >= 0; };
+  auto asked = [&](uint32_t v) { return slide_.slot(v) >= 0; };
   // The faces with an asked corner, found on the workers block by block (a pass over every
   // input face), then taken in order: each slot's faces and area as one thread would.
   constexpr size_t kBlock = 65536;
@@ -458,27 +458,27 @@ void Simplifier::slide_index(const std::vector<uint32_t>& fans) {
     for (const auto& h : hits)
       for (uint32_t face : h)
         for (int c = 0; c < 3; ++c) {
-          const int k = slide_slot(f[3 * size_t(face) + c]);
+          const int k = slide_.slot(f[3 * size_t(face) + c]);
           if (k >= 0) fn(face, size_t(k));
         }
   };
-  slide_first_.assign(slots + 1, 0);
-  slide_area_.assign(slots, 0.0f);
-  each_corner([&](uint32_t, size_t k) { ++slide_first_[k + 1]; });
+  slide_.first.assign(slots + 1, 0);
+  slide_.area.assign(slots, 0.0f);
+  each_corner([&](uint32_t, size_t k) { ++slide_.first[k + 1]; });
   for (size_t k = 0; k < slots; ++k)
-    slide_first_[k + 1] += slide_first_[k];
-  slide_faces_.resize(slide_first_.back());
-  std::vector<uint32_t> at(slide_first_.begin(), slide_first_.end() - 1);
-  each_corner([&](uint32_t face, size_t k) { slide_faces_[at[k]++] = face; });
+    slide_.first[k + 1] += slide_.first[k];
+  slide_.faces.resize(slide_.first.back());
+  std::vector<uint32_t> at(slide_.first.begin(), slide_.first.end() - 1);
+  each_corner([&](uint32_t face, size_t k) { slide_.faces[at[k]++] = face; });
   // Each slot's area from its faces in their order (the sum one thread made), the slots on the
   // workers (bunny00 x2 to 10 %, 16 cores projected: 10.9-11.05x before, with one fan a
   // chunk 11.1-11.2x).
   for_each_block(&workers_, slots, 4096, [&](size_t begin, size_t end) {
     for (size_t k = begin; k < end; ++k)
-      for (uint32_t i = slide_first_[k]; i < slide_first_[k + 1]; ++i) {
-        const uint32_t* q = f + 3 * size_t(slide_faces_[i]);
+      for (uint32_t i = slide_.first[k]; i < slide_.first[k + 1]; ++i) {
+        const uint32_t* q = f + 3 * size_t(slide_.faces[i]);
         const Vec3 a = eval_.position(q[0]), b = eval_.position(q[1]), d = eval_.position(q[2]);
-        slide_area_[k] += float(length(cross(b - a, d - a)) / 6);
+        slide_.area[k] += float(length(cross(b - a, d - a)) / 6);
       }
   });
 }
