@@ -340,6 +340,11 @@ expect_exit 2 "--split-vertices needs" "$bin" "$out/split.off" "$out/never.ply" 
 
 # Outputs are written under a temporary name beside them and renamed once whole: after every
 # run above, written or refused, none is left.
+# 12. The documentation shows the options as --help prints them (docs/cli.md includes the file):
+# one text for both.
+"$bin" --help | diff - "$meshes/../docs/cli-help.txt" >"$out/help.diff" && ok ||
+  fail "docs/cli-help.txt is not what --help prints (refresh it: vrsimplify --help > docs/cli-help.txt): $(head -5 "$out/help.diff")"
+
 left=$(find "$out" -name '.vrsimplify-*')
 [ -z "$left" ] && ok || fail "temporary outputs left: $left"
 
