@@ -3,7 +3,7 @@
 #include <array>
 #include <limits>
 
-#include "evaluate/local_error.h"
+#include "base/distance.h"
 
 namespace vrs {
 

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-#include "evaluate/local_error.h"
+#include "base/distance.h"
 
 namespace vrs {
 

@@ -5,6 +5,7 @@
 
 #include <vector>
 
+#include "base/distance.h"
 #include "evaluate/evaluation.h"
 #include "fill/triangulation.h"
 #include "mesh/topology.h"
@@ -12,13 +13,6 @@
 namespace vrs {
 
 class Workers;
-
-// Distance from p to the triangle (a, b, c), exact (closest point on the triangle).
-double point_triangle_distance(Vec3 p, Vec3 a, Vec3 b, Vec3 c);
-double point_triangle_distance2(const Vec3& p, const Vec3& a, const Vec3& b,
-                                const Vec3& c); // squared
-// Distance from p to the segment (a, b).
-double distance_to_segment(Vec3 p, Vec3 a, Vec3 b);
 
 // The fan of triangles around a removed vertex, as planned (`patch` holds the ring's positions,
 // its projection and the replaced faces, set_replaced_faces): squared distances from points of a

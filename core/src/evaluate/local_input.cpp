@@ -5,7 +5,7 @@
 #include <cmath>
 
 #include "evaluate/input_surface.h"
-#include "evaluate/local_error.h"
+#include "base/distance.h"
 
 namespace vrs {
 
