@@ -32,7 +32,7 @@ double nearest2(Vec3 x, const Patch& patch, double enough, int* which = nullptr)
 } // namespace
 
 bool CarriedPoints::folds_input(uint32_t v, const Ring& ring, const Patch& patch,
-                                const Evaluator& eval, const float* cones) const {
+                                const Positions& eval, const float* cones) const {
   if (patch.count == 0) return false;
   std::array<Vec3, kMaxRing> n; // the new triangles' unit normals
   // Their spread around the plan's normal N: all within the angle b of it (cos b = least).
@@ -85,7 +85,7 @@ uint32_t CarriedPoints::gather(uint32_t v, const Ring& ring, uint32_t skip) {
 }
 
 void CarriedPoints::hand_over(uint32_t v, const Ring& ring, const Patch& patch,
-                              const Evaluator& eval) {
+                              const Positions& eval) {
   const uint32_t chain = gather(v, ring, kNone);
   if (patch.count == 0) return; // nothing stands for them any more: the triangle went
   const Vec3 c = eval.position(v);
@@ -105,7 +105,7 @@ void CarriedPoints::hand_over(uint32_t v, const Ring& ring, const Patch& patch,
 }
 
 void CarriedPoints::slide(uint32_t v, uint32_t u, const Ring& ring, const Patch& fan,
-                          const Evaluator& eval) {
+                          const Positions& eval) {
   const uint32_t chain = gather(v, ring, u);
   next_[u] = kNone;
   for (uint32_t p = chain; p != kNone;) {

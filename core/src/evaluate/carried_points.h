@@ -8,8 +8,8 @@
 #include <cstdint>
 #include <vector>
 
+#include "base/positions.h"
 #include "base/workers.h"
-#include "evaluate/evaluation.h"
 #include "fill/triangulation.h"
 #include "mesh/topology.h"
 
@@ -26,7 +26,7 @@ class CarriedPoints {
   // After v's removal wrote the patch into the ring's face slots (new triangle i in slot
   // ring.f[i]): the old faces' points and v go to the new triangle nearest each. Touches only
   // the ring's slots and those points: removals of a batch hand over in parallel.
-  void hand_over(uint32_t v, const Ring& ring, const Patch& patch, const Evaluator& eval);
+  void hand_over(uint32_t v, const Ring& ring, const Patch& patch, const Positions& eval);
 
   // Each point the ring's faces carry.
   template <class Fn> void for_each(const Ring& ring, Fn&& fn) const {
@@ -40,7 +40,7 @@ class CarriedPoints {
   }
   // v gave its place to u (a point the ring's faces carried): v is carried, u no longer; each
   // point goes to the fan's triangle (in the ring's slots) nearest it.
-  void slide(uint32_t v, uint32_t u, const Ring& ring, const Patch& fan, const Evaluator& eval);
+  void slide(uint32_t v, uint32_t u, const Ring& ring, const Patch& fan, const Positions& eval);
 
   // Whether a new triangle turns over against the input surface it stands for: of the points
   // the ring's faces carry, and v, each one that projects (along the plan's normal) into a new
@@ -48,7 +48,7 @@ class CarriedPoints {
   // cone there (`cones`: vertex_normals(), 4 floats a vertex). The old faces only stand for
   // the input; after many removals they can lean far from it, and a fold-over is judged
   // against the input.
-  bool folds_input(uint32_t v, const Ring& ring, const Patch& patch, const Evaluator& eval,
+  bool folds_input(uint32_t v, const Ring& ring, const Patch& patch, const Positions& eval,
                    const float* cones) const;
 
  private:

@@ -3,6 +3,7 @@
 #pragma once
 
 #include "base/geometry.h"
+#include "base/positions.h"
 #include "mesh/topology.h"
 #include "vrs/simplify.h"
 
@@ -20,17 +21,15 @@ struct Evaluation {
   Vec3 fan_normal;   // unit area-weighted normal of the vertex's triangles
 };
 
-class Evaluator {
+// The positions it reads are its base: a view the input-side classes take as well.
+class Evaluator : public Positions {
  public:
   // `plane` is the mesh's own normal (Planar2D only).
   // `all_triples_valence`: up to which valence every triple is used (the benchmark and a
   // test vary it to measure what the subset changes).
   Evaluator(Mode mode, Vec3 plane, const float* positions,
             int all_triples_valence = kAllTriplesValence)
-      : mode_(mode), plane_(plane), pos_(positions), all_triples_(all_triples_valence) {}
-
-  Vec3 position(uint32_t v) const { return {pos_[3 * v], pos_[3 * v + 1], pos_[3 * v + 2]}; }
-  void set_positions(const float* positions) { pos_ = positions; } // the array grew (fan_split.h)
+      : Positions(positions), mode_(mode), plane_(plane), all_triples_(all_triples_valence) {}
 
   // Outline corners: a boundary vertex whose outline turns more than acos(cos) is kept
   // (default kBoundaryCornerCos). -1: none is (the local-error price, and the factor's last
@@ -46,7 +45,6 @@ class Evaluator {
 
   Mode mode_;
   Vec3 plane_;
-  const float* pos_;
   int all_triples_;
   double corner_cos_ = kBoundaryCornerCos;
 };

@@ -122,7 +122,7 @@ InputSurface::split_order(size_t count, const std::function<Vec3(size_t)>& centr
   return order;
 }
 
-void InputSurface::order_faces(const Evaluator& eval, Workers* workers) const {
+void InputSurface::order_faces(const Positions& eval, Workers* workers) const {
   const size_t faces = tris_.size() / 3;
   UninitVector<SplitItem> order = split_order(
       faces,
@@ -183,7 +183,7 @@ void part_box(const Vec3 p[3], Vec3 u, double t0, double t1, float lo[3], float 
 
 } // namespace
 
-void InputSurface::cut_long_faces(const Evaluator& eval, Workers* workers) const {
+void InputSurface::cut_long_faces(const Positions& eval, Workers* workers) const {
   const size_t faces = tris_.size() / 3;
   // How many pieces each face is cut into: a face whose box's middle extent passes kCutAt
   // times its height (a sliver lying across the axes) into pieces about two heights across
@@ -290,7 +290,7 @@ InputSurface::Deferral::~Deferral() {
   deferring = outer_;
 }
 
-bool InputSurface::build(const Evaluator& eval) const {
+bool InputSurface::build(const Positions& eval) const {
   if (done_.load(std::memory_order_acquire)) return true;
   if (deferring) {
     deferring->wanted_ = true;
@@ -300,11 +300,11 @@ bool InputSurface::build(const Evaluator& eval) const {
   return true;
 }
 
-void InputSurface::build_on(const Evaluator& eval, Workers* workers) const {
+void InputSurface::build_on(const Positions& eval, Workers* workers) const {
   std::call_once(build_once_, [&] { build_now(eval, workers); });
 }
 
-void InputSurface::build_now(const Evaluator& eval, Workers* workers) const {
+void InputSurface::build_now(const Positions& eval, Workers* workers) const {
   struct Done { // whichever way it returns
     std::atomic<bool>& flag;
     ~Done() { flag.store(true, std::memory_order_release); }
@@ -347,7 +347,7 @@ void InputSurface::build_now(const Evaluator& eval, Workers* workers) const {
   }
 }
 
-InputSurface::Box InputSurface::leaf_box(size_t leaf, const Evaluator& eval) const {
+InputSurface::Box InputSurface::leaf_box(size_t leaf, const Positions& eval) const {
   Box b;
   std::fill(b.lo, b.lo + 3, std::numeric_limits<float>::infinity());
   std::fill(b.hi, b.hi + 3, -std::numeric_limits<float>::infinity());
@@ -379,7 +379,7 @@ double InputSurface::box_distance2(const Box& b, Vec3 x) const {
   return d2;
 }
 
-bool InputSurface::nearest(Vec3 x, const Evaluator& eval, double& d2, Vec3& normal, size_t* hint,
+bool InputSurface::nearest(Vec3 x, const Positions& eval, double& d2, Vec3& normal, size_t* hint,
                            bool turned) const {
   if (levels_.empty()) return false;
   double best = std::numeric_limits<double>::infinity();
@@ -449,14 +449,14 @@ bool InputSurface::nearest(Vec3 x, const Evaluator& eval, double& d2, Vec3& norm
   return true;
 }
 
-Vec3 InputSurface::face_normal(size_t f, const Evaluator& eval, bool turned) const {
+Vec3 InputSurface::face_normal(size_t f, const Positions& eval, bool turned) const {
   const Vec3 a = eval.position(tris_[3 * f]);
   const Vec3 n =
       normalized(cross(eval.position(tris_[3 * f + 1]) - a, eval.position(tris_[3 * f + 2]) - a));
   return !turned_.empty() && bool(turned_[f]) != turned ? n * -1.0 : n;
 }
 
-bool InputSurface::ties_agree(Vec3 x, double r2, Vec3 n, const Evaluator& eval, bool turned) const {
+bool InputSurface::ties_agree(Vec3 x, double r2, Vec3 n, const Positions& eval, bool turned) const {
   TieVote vote(n, 1);
   // A long face is in the hierarchy in pieces (cut_long_faces): summed once.
   std::array<size_t, 16> seen;
@@ -489,7 +489,7 @@ bool InputSurface::ties_agree(Vec3 x, double r2, Vec3 n, const Evaluator& eval, 
   return vote.summed();
 }
 
-bool InputSurface::turned_at(Vec3 x, Vec3 n, const Evaluator& eval, size_t& hint,
+bool InputSurface::turned_at(Vec3 x, Vec3 n, const Positions& eval, size_t& hint,
                              bool turned) const {
   double d2;
   Vec3 nearest_normal;
@@ -514,7 +514,7 @@ int InputSurface::grid_side(double covers, int max_side) {
   return side >= most ? most : side > 2 ? int(side) : 2;
 }
 
-bool InputSurface::folds(const Patch& patch, const Evaluator& eval, double min_covers, int max_side,
+bool InputSurface::folds(const Patch& patch, const Positions& eval, double min_covers, int max_side,
                          uint64_t turned) const {
   if (!build(eval)) return true; // deferred: the caller plans again once it is built
   size_t hint = kNoFace;         // the sample points are asked in order, each near the one before
@@ -532,7 +532,7 @@ bool InputSurface::folds(const Patch& patch, const Evaluator& eval, double min_c
   return false;
 }
 
-double InputSurface::folded_area(const Patch& patch, const Evaluator& eval, double min_area,
+double InputSurface::folded_area(const Patch& patch, const Positions& eval, double min_area,
                                  double budget, uint64_t turned) const {
   if (!build(eval)) return std::numeric_limits<double>::infinity(); // deferred, as folds()
   size_t hint = kNoFace;

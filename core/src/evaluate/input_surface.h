@@ -14,9 +14,9 @@
 #include <utility>
 #include <vector>
 
+#include "base/positions.h"
 #include "base/uninitialized.h"
 #include "base/workers.h"
-#include "evaluate/evaluation.h"
 #include "fill/triangulation.h"
 
 namespace vrs {
@@ -66,9 +66,9 @@ class InputSurface {
   // afterwards. Runs on smooth meshes never ask, and never pay for it (0.26 s at 1.2 M faces;
   // boxes of 6 bytes a face, 10 more while it is set up). False: not built, as a Deferral on
   // this thread asked.
-  bool build(const Evaluator& eval) const;
+  bool build(const Positions& eval) const;
   // The same, its splits spread over the workers (from outside their loops).
-  void build_on(const Evaluator& eval, Workers* workers) const;
+  void build_on(const Positions& eval, Workers* workers) const;
   bool kept() const { return !tris_.empty(); }
   // Whether the hierarchy was built.
   bool built() const { return done_.load(std::memory_order_acquire) && !levels_.empty(); }
@@ -125,7 +125,7 @@ class InputSurface {
     double alone_;
   };
   // `normal` as written when the asking triangle is `turned` (keep()).
-  bool nearest(Vec3 x, const Evaluator& eval, double& d2, Vec3& normal, size_t* hint = nullptr,
+  bool nearest(Vec3 x, const Positions& eval, double& d2, Vec3& normal, size_t* hint = nullptr,
                bool turned = false) const;
 
   // Whether some new triangle of the patch turns more than 90 degrees from the input face
@@ -137,12 +137,12 @@ class InputSurface {
   // grid's side is at most `max_side` (2: the four points).
   // `turned`: bit t set for each new triangle the run holds reversed from how it will be
   // written (keep()'s `turned`; 0 for none).
-  bool folds(const Patch& patch, const Evaluator& eval, double min_covers = 0,
+  bool folds(const Patch& patch, const Positions& eval, double min_covers = 0,
              int max_side = kGridMax, uint64_t turned = 0) const;
   // The area of the patch's new triangles of at least `min_area` that turns more than 90
   // degrees from the input face nearest it, each point of a grid like folds()'s standing for
   // its sub-triangle; counted until it passes `budget` (then a value past it).
-  double folded_area(const Patch& patch, const Evaluator& eval, double min_area, double budget,
+  double folded_area(const Patch& patch, const Positions& eval, double min_area, double budget,
                      uint64_t turned = 0) const;
   static constexpr int kGridMax = 12; // the sample grid's cells a side at most
   // The grid's cells a side (each_grid_point's L) for a triangle covering `covers` input
@@ -179,8 +179,8 @@ class InputSurface {
   double box_distance2(const Box& b, Vec3 x) const;
   // A leaf's box from its faces' corners: not stored, as the leaves' boxes were half the
   // hierarchy's memory (6 bytes an input face) and the peak of runs that build it.
-  Box leaf_box(size_t leaf, const Evaluator& eval) const;
-  Box node_box(size_t level, size_t i, const Evaluator& eval) const {
+  Box leaf_box(size_t leaf, const Positions& eval) const;
+  Box node_box(size_t level, size_t i, const Positions& eval) const {
     return level ? levels_[level][i] : leaf_box(i, eval);
   }
   size_t node_count(size_t level) const { return level ? levels_[level].size() : leaves_; }
@@ -214,27 +214,27 @@ class InputSurface {
   // The order of `count` items for the leaves, a median split of their centroids at each level.
   static UninitVector<SplitItem>
   split_order(size_t count, const std::function<Vec3(size_t)>& centroid, Workers* workers);
-  void order_faces(const Evaluator& eval, Workers* workers) const; // tris_ in split_order
+  void order_faces(const Positions& eval, Workers* workers) const; // tris_ in split_order
   // A sliver lying across the axes (a diagonal cylinder's faces from end to end) has a box
   // spanning much of the mesh, opened by every question near any of it: on such a cylinder of
   // 1 024 faces every question read every face (4.4 s at 10 %; 0.75 s cut). Where they are
   // not rare, such faces enter the hierarchy cut across their length into pieces, each with
   // the box of its part; a face's nearest point lies in one of its pieces' boxes, so every
   // search answers as before.
-  void cut_long_faces(const Evaluator& eval, Workers* workers) const;
+  void cut_long_faces(const Positions& eval, Workers* workers) const;
   // Whether the faces within sqrt(r2) of x agree with a triangle facing n (kAgreeAlone).
   // `turned`: the asking triangle's orientation (keep()), in these three.
-  bool ties_agree(Vec3 x, double r2, Vec3 n, const Evaluator& eval, bool turned) const;
+  bool ties_agree(Vec3 x, double r2, Vec3 n, const Positions& eval, bool turned) const;
   // Whether a triangle facing n turns from the input at its point x, ties answered as
   // kAgreeAlone says; `hint` as nearest()'s.
-  bool turned_at(Vec3 x, Vec3 n, const Evaluator& eval, size_t& hint, bool turned) const;
+  bool turned_at(Vec3 x, Vec3 n, const Positions& eval, size_t& hint, bool turned) const;
   // Face f's unit normal, reversed when f and the asking triangle are held in different
   // orientations: the two compared as written.
-  Vec3 face_normal(size_t f, const Evaluator& eval, bool turned) const;
+  Vec3 face_normal(size_t f, const Positions& eval, bool turned) const;
 
   // Writes the mutable members below: const because the hierarchy is built on first use,
   // under build_once_, before any reader sees them.
-  void build_now(const Evaluator& eval, Workers* workers) const;
+  void build_now(const Positions& eval, Workers* workers) const;
   mutable std::once_flag build_once_;
   mutable std::atomic<bool> done_{false}; // build_now has run
   mutable UninitVector<uint32_t> tris_;   // 3 a face, faces with area only
