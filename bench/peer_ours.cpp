@@ -1,6 +1,7 @@
 #include <chrono>
 #include <string>
 
+#include "driver/simplifier.h"
 #include "peers.h"
 
 namespace vrs_bench {
@@ -28,6 +29,15 @@ PeerResult run_ours(const vrs::Mesh& in, size_t target_faces, vrs::Options o) {
 PeerResult run_ours_bound(const vrs::Mesh& in, double max_error, vrs::Options o) {
   o.max_error = max_error;
   return run_ours(in, 0, o);
+}
+
+vrs::Report run_ours_projected(vrs::Mesh& m, const vrs::Options& options, double& seconds_8,
+                               double& seconds_16) {
+  vrs::RunProjection projection;
+  const vrs::Report r = vrs::simplify_recorded(m, options, nullptr, &projection);
+  seconds_8 = projection.seconds_8;
+  seconds_16 = projection.seconds_16;
+  return r;
 }
 
 } // namespace vrs_bench

@@ -30,6 +30,10 @@ class MemoryProbe {
 
 // vrsimplify with `options` (its target is replaced by the face count).
 PeerResult run_ours(const vrs::Mesh& in, size_t target_faces, vrs::Options options);
+// Ours on `m` in place, with what the run would take on 8 and 16 threads (the run's own
+// measure of its loops' chunks; see vrs_bench --serial).
+vrs::Report run_ours_projected(vrs::Mesh& m, const vrs::Options& options, double& seconds_8,
+                               double& seconds_16);
 // MeshLab's Quadric Edge Collapse Decimation: vcglib's TriEdgeCollapseQuadric with the filter's
 // dialog defaults and its post-simplification cleaning (filter_meshing 2020.09).
 // `preserve_topology`: the dialog's "Preserve Topology" (off by default), which refuses the

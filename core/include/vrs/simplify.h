@@ -269,9 +269,6 @@ struct Report {
   // Wall time of the run, and the part of it spent in loops spread over the threads (the
   // rest ran on one thread whatever Options::threads: Amdahl's serial part).
   double seconds = 0, parallel_seconds = 0;
-  // On one thread: what the run would take on 8 and 16, its loops each in rounds of their
-  // chunks (Workers::span_seconds), the rest as it was. Amdahl's bound without the chunks.
-  double projected_seconds_8 = 0, projected_seconds_16 = 0;
   size_t rejected[RejectCount] = {};
   size_t rejected_total() const;
 

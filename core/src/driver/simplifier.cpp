@@ -183,7 +183,8 @@ Report simplify(Mesh& mesh, const Options& options) {
   return simplify_recorded(mesh, options, nullptr);
 }
 
-Report simplify_recorded(Mesh& mesh, const Options& options, RemovalRecord* record) {
+Report simplify_recorded(Mesh& mesh, const Options& options, RemovalRecord* record,
+                         RunProjection* projection) {
   Report rep;
   rep.input_vertices = mesh.vertex_count();
   rep.input_faces = mesh.face_count();
@@ -215,8 +216,10 @@ Report simplify_recorded(Mesh& mesh, const Options& options, RemovalRecord* reco
   s.compact();
   rep.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
   rep.parallel_seconds = s.parallel_seconds();
-  rep.projected_seconds_8 = rep.seconds - rep.parallel_seconds + s.span_seconds(8);
-  rep.projected_seconds_16 = rep.seconds - rep.parallel_seconds + s.span_seconds(16);
+  if (projection) {
+    projection->seconds_8 = rep.seconds - rep.parallel_seconds + s.span_seconds(8);
+    projection->seconds_16 = rep.seconds - rep.parallel_seconds + s.span_seconds(16);
+  }
   rep.ok = true;
   rep.target_reached = rep.stop == StopReason::TargetReached || rep.stop == StopReason::MaxFactor ||
                        rep.stop == StopReason::LastInterval || rep.stop == StopReason::ErrorBound;

@@ -292,6 +292,13 @@ class Simplifier {
 struct RemovalRecord {
   std::vector<uint32_t> log, base_slots, base_corners;
 };
-Report simplify_recorded(Mesh& mesh, const Options& options, RemovalRecord* record);
+// For the benchmark (vrs_bench --serial): on one thread, what the run would take on 8 and 16,
+// its loops each in rounds of their chunks (Workers::span_seconds), the rest as it was.
+// Amdahl's bound without the chunks.
+struct RunProjection {
+  double seconds_8 = 0, seconds_16 = 0;
+};
+Report simplify_recorded(Mesh& mesh, const Options& options, RemovalRecord* record,
+                         RunProjection* projection = nullptr);
 
 } // namespace vrs
