@@ -47,7 +47,7 @@ bool read_xyz(std::istream& s, float& x, float& y, float& z) {
 }
 
 // One line's numbers read in place, as the stream operators read them (an istringstream a line
-// cost 0.4 s of a 1.2 M-face OFF's 5.4 s run): xyz() by read_xyz's grammar, whole tokens;
+// was a visible share of a large OFF's run): xyz() by read_xyz's grammar, whole tokens;
 // integer() and real() as >> for long and float: leading blanks skipped, the longest number
 // there taken, the rest left for the next read.
 class LineNumbers {

@@ -29,13 +29,13 @@ namespace {
 constexpr int kMaxLevels = 12;
 constexpr double kSlack = 0.005; // done within half a per cent of the target
 // The share of the whole budget (kTilesInMemory tiles) the last, single tile is left with:
-// 0.5 measured best of 0.25, 0.5, 0.7 and 0.9 (max error at 1 % on two bunnies and a terrain).
+// the best max error of the shares tried (bench/TILED.md).
 constexpr double kLastRoom = 0.5;
 
 // The faces one tile may hold when it runs alone, with the whole budget: three quarters of
-// kTilesInMemory tiles' worth, since a lone tile runs on every core (measured 245 bytes a face
-// at the peak of a lone tile of 600 k faces, against the 200 a tile is cut for: a colored scan
-// at 10 % peaked at 148 MB for a budget of 120 MB with the whole four tiles' worth).
+// kTilesInMemory tiles' worth, since a lone tile runs on every core and peaks above the bytes a
+// face a tile is cut for (with the whole four tiles' worth, a colored scan went over its
+// budget).
 uint64_t lone_faces(uint64_t per_tile) {
   return per_tile * kTilesInMemory * 3 / 4;
 }
@@ -389,7 +389,7 @@ void run_tile(const std::string& dir, int level, uint64_t tile, int lone_threads
     polygons |= (polygon[f] = in[f].polygon) != 0;
   // On the first two levels the ratio applies to the faces the tile may change: asking the
   // faces along its locked border to go too makes the rest of the tile go further than the
-  // target asks (measured: +21 % mean error at 10 % on 1.2 M faces); the next level, shifted,
+  // target asks (more mean error, measured); the next level, shifted,
   // releases them. From the third level on (small remainders, coarser tiles) a tile goes as
   // far as the level's ratio of all its faces, without the core's last resort, so that the
   // run converges. Tiles never go below what one tile of the last level can take (kLastRoom):

@@ -113,7 +113,7 @@ struct Tuning {
   // Fold-overs judged against the input, not only against faces that may already lean far
   // from it. With Priority::LocalError: each removed vertex is carried by the face nearest it,
   // and a removal is refused where a new triangle would face against the input's normal at a
-  // vertex it carries (4 bytes a vertex and a face, about an eighth more time). Once the
+  // vertex it carries (4 bytes a vertex and a face, and some time). Once the
   // vetoes are eased to reach a count target (Report::relaxed_removals), with either
   // priority, a new triangle must also not turn more than 90 degrees from the input face
   // nearest it (the input's faces are kept for that: 12 bytes a face), unless the target is

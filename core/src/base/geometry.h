@@ -47,8 +47,8 @@ struct Vec2 {
 };
 
 // A fixed array of vectors that starts unset (a Vec3 or Vec2 alone zeroes itself): the ring
-// buffers hold kMaxRing + 1 entries and a plan writes a handful, and zeroing them all took
-// ~10 % of a run. Read only what was written.
+// buffers hold kMaxRing + 1 entries and a plan writes a handful, and zeroing them all took a
+// noticeable share of a run. Read only what was written.
 template <class T, size_t N> class UnsetArray {
  public:
   UnsetArray() {} // the union's member is left unconstructed

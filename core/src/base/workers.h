@@ -61,7 +61,7 @@ class Workers {
   std::mutex mutex_;
   std::condition_variable wake_, done_;
   // Whether waits poll first: only when every thread has a core of its own (with more threads
-  // than cores a polling thread takes the core from one with work: 4x slower at 8 on 2).
+  // than cores a polling thread takes the core from one with work).
   bool poll_ = false;
   const std::function<void(size_t)>* fn_ = nullptr;
   size_t n_ = 0, grain_ = 1;

@@ -266,10 +266,9 @@ bool Simplifier::run_cut(Parts& parts, size_t needed0) {
   // Rounds: each takes at most half the removals still needed, up to the price all of them are
   // under, each part its share of that half by its vertices under the price, so the parts
   // spend their faces as one queue would; the whole queue then makes the last and dearest
-  // ones. (Up to the price half of them are under, a round took a third to a tenth of that
-  // half: after a neighbour's removal most vertices are dearer and wait. bunny00 x2 to 10 %:
-  // the parts made 426 k of the 543 k removals, now 468 k, which the whole queue made at
-  // twice their cost a removal; 7 % less time on one thread and on two, the same errors.)
+  // ones. (Up to the price half of them are under, a round took only a fraction of that half:
+  // after a neighbour's removal most vertices are dearer and wait, and what the parts leave
+  // the whole queue makes at a higher cost a removal.)
   std::vector<float> prices;
   // The price is read off a sample of the vertices (every stride-th), the same for any
   // threads: the whole list's nth_element was a tenth of the serial time.
@@ -281,7 +280,7 @@ bool Simplifier::run_cut(Parts& parts, size_t needed0) {
     const size_t needed = removals_needed();
     if (needed <= needed0 * kPartsLeave) break;
     // The frozen vertices count too (at their last price): left out, the price climbed past
-    // them while they waited, and parts of 1024 vertices came out 9x the error.
+    // them while they waited, and small parts came out with far more error.
     // Read in blocks on the workers (scattered reads: a fifth of the serial time by parts);
     // the k-th price does not depend on the order they are joined in.
     for_each_block(&workers_, samples, kSampleBlock, [&](size_t begin, size_t end) {
@@ -322,7 +321,7 @@ bool Simplifier::run_cut(Parts& parts, size_t needed0) {
         parts.count, [&](size_t j) { run_part(part[order[j]], threshold, cap[order[j]], frozen); },
         1);
     // A part that met a plan needing the input's hierarchy stopped there: built now on all the
-    // workers (bunny00 x2 at parts of 18 852 vertices: 0.26 s in one part, the others 0.03 s).
+    // workers (built inside one part, it kept that part far longer than the others).
     bool waited = false;
     for (Part& q : part)
       waited |= std::exchange(q.waits, false);

@@ -59,7 +59,7 @@ double Simplifier::price(const void* self, uint32_t v, const Ring& ring, const P
   const double local = patch_error(v, ring, patch, s->eval_, s->reference_area_);
   if (s->face_bound_.empty()) return local;
   // With a bound, what will stop the run is the bound: the removals that raise it least go
-  // first (1-4 % fewer faces at the same bound on elephant, fandisk, armadillo).
+  // first (fewer faces at the same bound).
   double worst = 0;
   for (int t = 0; t < patch.count; ++t)
     worst = std::max(worst, double(patch.bound[t]));

@@ -41,8 +41,8 @@ struct Planned {
 
 // Reads up to `ids.size()` vertices off the front of the queue's lowest interval into `ids`
 // (a small array: the batch's plans are kilobytes each, written by the workers); `from` is the
-// interval. From the lowest interval only: reaching 16 intervals up filled the batches but
-// cost 2 % of mean and 8 % of max error on the whole data set.
+// interval. From the lowest interval only: reaching further up filled the batches but cost
+// error on the whole data set.
 template <class Queue>
 size_t take_front(const Queue& queue, std::vector<uint32_t>& ids, int& from) {
   const size_t count = queue.read_front(ids.data(), ids.size());

@@ -42,8 +42,8 @@ struct Plane {
 
 // A fan's triangles' bounding spheres: a point's nearest triangle is sought from the last
 // point's (the carried points come face by face), and a triangle whose sphere lies beyond the
-// nearest so far is not measured (bunny00 at 1 %: 11.0 M distances in the slide before, 6.0 M),
-// nor one whose plane does (a triangle is never nearer than its plane).
+// nearest so far is not measured, nor one whose plane does (a triangle is never nearer than its
+// plane).
 class FanBounds {
  public:
   explicit FanBounds(const Patch& patch) : patch_(patch) {
@@ -276,8 +276,8 @@ uint32_t Simplifier::slide_choice(uint32_t v, const Ring& ring) const {
     fan_patch(ring, eval_.position(chosen), eval_, trial);
     measure_against(trial, local, folds, std::numeric_limits<double>::infinity(), true);
     // And against the whole input where its corners are unsure (a thread's far flank is no
-    // local face), as a removal's plan is: threaded-short at 10 % folded 0.1 % more of its
-    // area without it. Only where the run built its hierarchy (the CAD parts, where those
+    // local face), as a removal's plan is: without it threaded parts folded more of their
+    // area. Only where the run built its hierarchy (the CAD parts, where those
     // fans are): elsewhere refused, as building it would take 16 bytes a face at the peak.
     // The fan's triangle i stands where ring face i did.
     if (!folds && unsure)
@@ -420,7 +420,7 @@ void Simplifier::slide_index(const std::vector<uint32_t>& fans) {
   // fan hands its points to its own faces, so these are all the later fans meet. Each gets a
   // slot, numbered in vertex order: its input faces (slide_local) and a third of their area
   // (slide_in: the input side of the error is an area integral, as the benchmark samples
-  // it). Slots, not arrays over every vertex (those took 4.4 MB at 300 k faces).
+  // it). Slots, not arrays over every vertex (the memory of those arrays showed at the peak).
   const uint32_t* tris = mesh_.triangles.data();
   std::vector<uint32_t> ids;
   for (uint32_t v : fans) {
@@ -471,8 +471,7 @@ void Simplifier::slide_index(const std::vector<uint32_t>& fans) {
   std::vector<uint32_t> at(slide_.first.begin(), slide_.first.end() - 1);
   each_corner([&](uint32_t face, size_t k) { slide_.faces[at[k]++] = face; });
   // Each slot's area from its faces in their order (the sum one thread made), the slots on the
-  // workers (bunny00 x2 to 10 %, 16 cores projected: 10.9-11.05x before, with one fan a
-  // chunk 11.1-11.2x).
+  // workers.
   for_each_block(&workers_, slots, 4096, [&](size_t begin, size_t end) {
     for (size_t k = begin; k < end; ++k)
       for (uint32_t i = slide_.first[k]; i < slide_.first[k + 1]; ++i) {

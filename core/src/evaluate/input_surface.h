@@ -2,8 +2,8 @@
 // is nearest this point?") after the mesh's own faces have drifted from it. A bounding-volume
 // hierarchy with no pointers: the faces reordered by median splits, leaves of kLeaf
 // consecutive faces, each level's node i the box of nodes 2i and 2i + 1 below. (Leaves taken
-// straight from the Morton order setup gives the faces were 6x slower to search: 23 against
-// 3.8 us a query on 1.2 M faces.)
+// straight from the Morton order setup gives the faces made far looser boxes, slower to
+// search.)
 #pragma once
 
 #include <algorithm>
@@ -52,7 +52,7 @@ class InputSurface {
   // written (orientation.h, turned_by_welding). A fold is then judged as written, as the
   // output gives the faces back: a new triangle of the other orientation than the input face
   // nearest it faces away where the run sees them agree (a slope across a staircase of
-  // pieces written in different orientations: boeing at 10 %, 2.4 % -> 1.0 % folded).
+  // pieces written in different orientations, as CGAL's boeing).
   void keep(const std::vector<uint32_t>& tris, std::vector<uint8_t> turned = {},
             Workers* workers = nullptr) {
     tris_.resize(tris.size()); // copied block by block on the workers
@@ -63,8 +63,8 @@ class InputSurface {
   }
   // Builds the hierarchy over the faces kept; faces without area are left out (they have no
   // side). Once, by the first caller (folds() calls it, from any thread); nothing to do
-  // afterwards. Runs on smooth meshes never ask, and never pay for it (0.26 s at 1.2 M faces;
-  // boxes of 6 bytes a face, 10 more while it is set up). False: not built, as a Deferral on
+  // afterwards. Runs on smooth meshes never ask, and never pay for it (its time, and boxes of 6
+  // bytes a face, 10 more while it is set up). False: not built, as a Deferral on
   // this thread asked.
   bool build(const Positions& eval) const;
   // The same, its splits spread over the workers (from outside their loops).
@@ -108,8 +108,8 @@ class InputSurface {
   // turns less than 60 degrees from the triangle (this dot product of unit normals), or where
   // those faces' normals summed turn less than 90 degrees from it: the same answer whichever
   // of them a search meets first. The benchmark takes one of the nearest: "any of them turns
-  // less than 90 degrees" let fins stand across a ridge, near 90 degrees from both flanks
-  // (Wuson at 1 %: 1.03 % of the area folded); a face along one side of a crease agrees.
+  // less than 90 degrees" let fins stand across a ridge, near 90 degrees from both flanks; a
+  // face along one side of a crease agrees.
   static constexpr double kAgreeAlone = 0.5;
   // That question, one tied face at a time, for a triangle facing n (of length `length`).
   class TieVote {
@@ -203,8 +203,8 @@ class InputSurface {
     return &pieces_[items_[i] - tris_.size() / 3].box;
   }
   // An item's centroid to 16 bits an axis and its index, side by side: the splits read the
-  // keys in place (through an index array they missed the cache: 300 k faces' build 0.062 ->
-  // 0.053 s). 10 bytes, what the keys and the index array took apart.
+  // keys in place (through an index array they missed the cache). 10 bytes, what the keys and
+  // the index array took apart.
   struct SplitItem {
     uint16_t key[3];
     uint16_t low, high; // the index, in halves: no padding
@@ -216,8 +216,8 @@ class InputSurface {
   split_order(size_t count, const std::function<Vec3(size_t)>& centroid, Workers* workers);
   void order_faces(const Positions& eval, Workers* workers) const; // tris_ in split_order
   // A sliver lying across the axes (a diagonal cylinder's faces from end to end) has a box
-  // spanning much of the mesh, opened by every question near any of it: on such a cylinder of
-  // 1 024 faces every question read every face (4.4 s at 10 %; 0.75 s cut). Where they are
+  // spanning much of the mesh, opened by every question near any of it: on such a cylinder
+  // every question read every face. Where they are
   // not rare, such faces enter the hierarchy cut across their length into pieces, each with
   // the box of its part; a face's nearest point lies in one of its pieces' boxes, so every
   // search answers as before.

@@ -1,8 +1,8 @@
 // The input faces around a fan (those of its ring's vertices, its apex and the points its
 // faces carry): the surface the fan stands for, which the slide (slide.cpp) asks instead of
-// the whole input's hierarchy (its build alone was 0.48 s at 1.2 M faces, the questions 4x
-// the run). A grid of the faces' spheres, read instead of every face, cut the instructions a
-// tenth more at 1 % but not the time (bunny00: 1.23 s both).
+// the whole input's hierarchy (whose build and questions cost more than the run itself on large
+// meshes). A grid of the faces' spheres, read instead of every face, cut instructions but not
+// the time.
 #pragma once
 
 #include <cstdint>

@@ -129,7 +129,7 @@ Reject Planner::plan(uint32_t v, const Ring& ring, Vec3 n, Patch& out, double& c
     return accept(hint);
   // Every candidate gets the cheap estimate; in its order, the first one no veto refuses is
   // planned and priced exactly. (Pricing each exactly chose about as well on the benchmark's
-  // meshes and cost 2.5x the time.) The projection's triangles are kept aside: ear clipping
+  // meshes, for far more time.) The projection's triangles are kept aside: ear clipping
   // is the one candidate that is dear to make twice. An estimate may stop once it is beyond
   // the best so far (a lower bound then): it is finished only if its turn comes, and the
   // order is the one the finished estimates give (ties to the lower candidate).
