@@ -194,7 +194,8 @@ TEST(Constraints, CrossingSeamsKeepTheCrossing) {
     vrs::Mesh out = in;
     vrs::Options o = with(&seams, 0);
     o.simplify_boundary = true;
-    o.tuning.lazy_from_faces = lazy ? 0 : o.tuning.lazy_from_faces; // eager: the default on a small mesh
+    o.tuning.lazy_from_faces =
+        lazy ? 0 : o.tuning.lazy_from_faces; // eager: the default on a small mesh
     vrs::Report r = vrs::simplify(out, o);
     ASSERT_TRUE(r.ok) << r.message;
     EXPECT_NE(r.remap[4 * 9 + 4], vrs::kRemoved); // four seam edges meet there

@@ -188,7 +188,8 @@ TEST(Simplify, StopsShortRatherThanCutTheOutline) {
     Mesh m = in;
     Options o = faces(0);
     o.simplify_boundary = true;
-    o.tuning.lazy_from_faces = lazy ? 0 : o.tuning.lazy_from_faces; // eager: the default on a small mesh
+    o.tuning.lazy_from_faces =
+        lazy ? 0 : o.tuning.lazy_from_faces; // eager: the default on a small mesh
     Report r = simplify(m, o);
     expect_valid(in, m, r);
     EXPECT_EQ(r.stop, StopReason::NoCandidates);

@@ -4,8 +4,8 @@
 #include <algorithm>
 #include <cmath>
 
-#include "evaluate/input_surface.h"
 #include "base/distance.h"
+#include "evaluate/input_surface.h"
 
 namespace vrs {
 

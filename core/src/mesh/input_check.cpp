@@ -25,7 +25,8 @@ std::string check_options(const Options& o, size_t vertex_count, size_t face_cou
     return "threads must be in [0, 1024] (0: all hardware threads), got " +
            std::to_string(o.threads);
   if (o.tuning.part_vertices < 0 || (o.tuning.part_vertices > 0 && o.tuning.part_vertices < 64))
-    return "part vertices must be 0 (no parts) or >= 64, got " + std::to_string(o.tuning.part_vertices);
+    return "part vertices must be 0 (no parts) or >= 64, got " +
+           std::to_string(o.tuning.part_vertices);
   if (o.tuning.intervals < 2 || o.tuning.intervals > (1 << 20))
     return "intervals must be in [2, 1048576], got " + std::to_string(o.tuning.intervals);
   if (!(o.max_normal_angle_deg > 0.0 && o.max_normal_angle_deg <= 90.0))
