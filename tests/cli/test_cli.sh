@@ -340,6 +340,15 @@ expect_exit 2 "--split-vertices needs" "$bin" "$out/split.off" "$out/never.ply" 
 
 # Outputs are written under a temporary name beside them and renamed once whole: after every
 # run above, written or refused, none is left.
+# 12a. The stop's cause as a name: none when reached; fandisk asked for 4 faces stops where every
+# removal left would fold (the vetoes), and the text report names it too.
+"$bin" "$in" "$out/c.ply" --ratio 0.1 --json | grep -q '"stop_cause":"none"' && ok ||
+  fail "a run that reached its target reports a stop cause"
+"$bin" "$in" "$out/c.ply" --faces 4 --json | grep -q '"stop_cause":"vetoes"' && ok ||
+  fail "fandisk to 4 faces does not report the vetoes as its stop cause"
+"$bin" "$in" "$out/c.ply" --faces 4 | grep -q '^stopped: no_candidates (cause: vetoes)' && ok ||
+  fail "the text report does not name the stop cause"
+
 # 12. The documentation shows the options as --help prints them (docs/cli.md includes the file):
 # one text for both.
 "$bin" --help | diff - "$meshes/../docs/cli-help.txt" >"$out/help.diff" && ok ||

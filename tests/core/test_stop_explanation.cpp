@@ -58,3 +58,22 @@ TEST(StopExplanation, SaysHowToWeldOnlyWhereSplitVerticesMakeMostSeams) {
   r.constrained = 0; // nothing kept by a seam: nothing to say about them
   EXPECT_EQ(explain_remaining(r, false, false).find("split_vertices"), std::string::npos);
 }
+
+// Report::stop_cause: the group that keeps most of the remaining vertices; the vetoes count
+// together, outline corners with the boundary; of equal groups the first the words list.
+TEST(StopExplanation, TheCauseIsTheLargestGroup) {
+  EXPECT_EQ(main_cause(Remaining{}), StopCause::None);
+  Remaining r;
+  r.boundary = 3;
+  r.refused[RejectFold] = 2;
+  r.refused[RejectFoldOver] = 2;
+  EXPECT_EQ(main_cause(r), StopCause::Vetoes);
+  r.corners = 1;
+  EXPECT_EQ(main_cause(r), StopCause::Boundary); // 4 against 4: the boundary is listed first
+  r.split_seam = 5;
+  EXPECT_EQ(main_cause(r), StopCause::SplitSeam);
+  r.untried = 6;
+  EXPECT_EQ(main_cause(r), StopCause::NoPlane);
+  EXPECT_STREQ(stop_cause_name(StopCause::NoPlane), "no_plane");
+  EXPECT_STREQ(stop_cause_name(StopCause::PriceJump), "price_jump");
+}
