@@ -21,6 +21,7 @@ def test_filter_loads_and_simplifies():
     assert ms.current_mesh().face_number() <= faces // 10
     assert result["stop_reason"] == "target_reached" and result["target_reached"]
     assert result["target_faces"] == faces // 10 and result["stop_detail"] == ""
+    assert result["stop_cause"] == "none"
     # Both call styles answer alike: the stop reason as text, as the numpy API's report.
     raw = ms.apply_filter(vp.FILTER, targetfacenum=100)
     assert raw["stop_reason"] == "target_reached" and raw["target_faces"] == 100
@@ -62,6 +63,9 @@ def test_stopping_short_warns_and_says_why(tmp_path):
         assert result["stop_reason"] == "no_candidates"
         assert result["stop_detail"].startswith("remaining vertices") or \
             result["stop_detail"].startswith("stopped short"), result["stop_detail"]
+        # The cause as a name, as the words say it: a price jump, or the vetoes (a torus's genus).
+        jump = result["stop_detail"].startswith("stopped short")
+        assert result["stop_cause"] == ("price_jump" if jump else "vetoes"), result
         short = [w for w in caught if issubclass(w.category, vrsimplify.TargetNotReachedWarning)]
         assert len(short) == 1 and "2 faces asked" in str(short[0].message)
         assert f"{ms.current_mesh().face_number()} faces kept" in str(short[0].message)

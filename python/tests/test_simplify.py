@@ -350,6 +350,8 @@ def test_stopping_short_warns_with_the_counts_and_the_reason():
     text = str(short[0].message)
     assert f"2 faces asked, {len(r.faces)} faces kept" in text and r.report["stop_detail"] in text
     assert r.report["target_faces"] == 2 and not r.report["target_reached"]
+    jump = r.report["stop_detail"].startswith("stopped short")
+    assert r.report["stop_cause"] == ("price_jump" if jump else "vetoes"), r.report
     assert short[0].filename == __file__  # points at the caller's line
     with warnings.catch_warnings():
         warnings.simplefilter("error", vrsimplify.TargetNotReachedWarning)
