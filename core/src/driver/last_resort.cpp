@@ -1,5 +1,3 @@
-#include <algorithm>
-
 #include "driver/simplifier.h"
 #include "queue/bucket_queue.h"
 #include "queue/heap_queue.h"
@@ -43,8 +41,10 @@ template <class Queue> bool Simplifier::relax(Queue& queue, bool after_jump) {
       relax_level_ = RelaxLevel::Eased;
       limits_.agreeing_corners = 2;
     } else {
-      relax_level_ = std::max(relax_level_, RelaxLevel::Eased);
-      if (after_jump) return false;
+      if (after_jump) { // eased, not the last resort: a jump is met once
+        relax_level_ = RelaxLevel::Eased;
+        return false;
+      }
       relax_level_ = RelaxLevel::LastResort;
       limits_.agreeing_corners = 1;
       limits_.least_cost_filling = true;
