@@ -1,7 +1,7 @@
 """Progressive meshes: a base and one insertion a removed vertex, coarsest first.
 
     import vrsimplify
-    p = vrsimplify.progressive(vertices, faces, base=0.01)
+    p = vrsimplify.progressive(vertices, faces)
     coarse = p.faces_after(0)           # the base: (input faces, 3) input vertex ids, -1: empty
     finer = p.faces_after(1000)         # after 1 000 insertions
     assert (p.faces_after(p.insertions) == faces).all()   # up to each face's rotation
@@ -83,7 +83,7 @@ class Progressive:
         return np.where(corners >= 0, flat[np.maximum(corners, 0)], -1)
 
 
-def progressive(mesh_vertices, mesh_faces, /, *, base: float = 0.01, mode: str = "surface",
+def progressive(mesh_vertices, mesh_faces, /, *, base: float = 0.005, mode: str = "surface",
                 simplify_boundary: bool = False, keep_boundary: bool = False,
                 max_jump: float = 10.0, feature_angle: float = 0.0, seams=None,
                 corner_keys=None) -> Progressive:
