@@ -1,8 +1,8 @@
 // A progressive .glb (docs/progressive.md) in the browser: the base mesh, then one insertion
 // record a vertex, applied as the bytes arrive. ProgressiveDecoder keeps the vertex bytes and
 // the indices in arrays sized for the whole mesh and says which ranges each step changed (no
-// three.js here); streamProgressive reads a URL with a streamed fetch; VRSProgressivePlugin
-// does the same for three.js's GLTFLoader when it loaded the whole file.
+// three.js here); streamProgressive reads a URL, its base first and then the records streamed;
+// VRSProgressivePlugin does the same for three.js's GLTFLoader when it loaded the whole file.
 
 export const EXTENSION = "VRS_mesh_progressive";
 const CLOSED_FAN = 1, OPEN_FAN = 2, LISTED_RING = 3;
@@ -233,19 +233,17 @@ export class ProgressiveDecoder {
   }
 }
 
-// Reads `url` with one streamed GET (a throttled server sends it as it can): calls
-// onBase(decoder) once the base's bytes are in, then onBytes(received, total) as more arrive;
-// the records are pushed into the decoder, which the caller applies (per frame, say).
+// Reads `url`: calls onBase(decoder) once the base's bytes are in, then onBytes(received,
+// total) as more arrive; the records are pushed into the decoder, which the caller applies (per
+// frame, say). Where the server takes range requests, the header and the base come first, by
+// themselves, and then the records in one streamed GET: a browser hands a streamed response
+// over several chunks at a time, and the base waited for bytes past its own. Elsewhere the
+// whole file is one streamed GET.
 export async function streamProgressive(url, { onBase, onBytes = () => {} }) {
-  const response = await fetch(url);
-  if (!response.ok) throw new Error(`${url}: HTTP ${response.status}`);
-  const reader = response.body.getReader();
-  const total = Number(response.headers.get("Content-Length")) || 0;
-  let buffer = new Uint8Array(Math.max(total, 1 << 16)), length = 0;
+  const kFirst = 1 << 16; // the first range: the header, and a small file's whole base
+  let buffer = new Uint8Array(kFirst), length = 0, total = 0;
   let header = null, layout = null, decoder = null, fed = 0;
-  for (;;) {
-    const { done, value } = await reader.read();
-    if (done) break;
+  const take = (value) => {
     if (length + value.length > buffer.length) {
       const grown = new Uint8Array(Math.max(2 * buffer.length, length + value.length));
       grown.set(buffer.subarray(0, length));
@@ -258,7 +256,7 @@ export async function streamProgressive(url, { onBase, onBytes = () => {} }) {
       layout = describeProgressive(header.json);
       if (!layout) throw new Error(`${url}: no ${EXTENSION} extension`);
     }
-    if (!layout) continue;
+    if (!layout) return;
     const bin = header.binStart;
     if (!decoder && length >= bin + layout.recordStart) {
       decoder = new ProgressiveDecoder(layout, buffer.subarray(bin, length));
@@ -268,6 +266,35 @@ export async function streamProgressive(url, { onBase, onBytes = () => {} }) {
     if (decoder && length > fed) {
       decoder.push(buffer.subarray(fed, length));
       fed = length;
+    }
+  };
+  const get = async (first, last = "") => {
+    const response = await fetch(url, { headers: { Range: `bytes=${first}-${last}` } });
+    if (!response.ok) throw new Error(`${url}: HTTP ${response.status}`);
+    return response;
+  };
+  let response = await get(0, kFirst - 1);
+  if (response.status === 206) {
+    total = Number(/\/(\d+)$/.exec(response.headers.get("Content-Range") ?? "")?.[1]) || 0;
+    buffer = new Uint8Array(Math.max(total, kFirst));
+    take(new Uint8Array(await response.arrayBuffer()));
+    // The header's rest (a JSON past the first range), then the base's.
+    while (!decoder && length < total) {
+      const need = layout ? header.binStart + layout.recordStart : 2 * length;
+      response = await get(length, Math.min(need, total) - 1);
+      take(new Uint8Array(await response.arrayBuffer()));
+    }
+    response = !total || length < total ? await get(length) : null;
+  } else {
+    total = Number(response.headers.get("Content-Length")) || 0;
+    buffer = new Uint8Array(Math.max(total, kFirst));
+  }
+  if (response) {
+    const reader = response.body.getReader();
+    for (;;) {
+      const { done, value } = await reader.read();
+      if (done) break;
+      take(value);
     }
   }
   if (!decoder) throw new Error(`${url}: the file ends before its base mesh`);
