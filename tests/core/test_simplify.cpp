@@ -198,6 +198,10 @@ TEST(Simplify, StopsShortRatherThanCutTheOutline) {
         << r.stop_detail;
     // The option named as users write it (Python's max_jump, the command line's --max-jump).
     EXPECT_NE(r.stop_detail.find("max_jump, --max-jump: 10"), std::string::npos) << r.stop_detail;
+    // A flat grid's removals cost nothing: the jump is measured from the floor, and said so.
+    EXPECT_NE(r.stop_detail.find("times a thousandth of the bounding box's diagonal"),
+              std::string::npos)
+        << r.stop_detail;
     EXPECT_EQ(r.stop_cause, StopCause::PriceJump);
     EXPECT_EQ(r.target_faces, 0u);
     // Lazy, the first jump comes with nothing cheap left; eager prices reach it with three

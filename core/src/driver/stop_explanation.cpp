@@ -109,14 +109,24 @@ StopCause main_cause(const Remaining& r) {
 
 void Simplifier::explain_stop() {
   if (jump_price_ > 0) {
-    char why[512];
+    // The jump is measured from the dearest removal, or from the floor when that is higher
+    // (jumps()): the words name the one it was measured from.
+    const char* when = eased() ? "before the vetoes were eased" : "so far";
+    char from[160];
+    if (jump_from_ >= jump_floor_)
+      std::snprintf(from, sizeof from, "the dearest made %s (%.3g)", when, jump_from_);
+    else
+      std::snprintf(from, sizeof from,
+                    "a thousandth of the bounding box's diagonal (%.3g; the dearest made %s: "
+                    "%.3g)",
+                    jump_floor_, when, jump_from_);
+    char why[640];
     std::snprintf(why, sizeof why,
                   "stopped short of the target: the cheapest removal left costs %.3g, %.0f times "
-                  "the dearest made %s (%.3g); the surface would change abruptly (a part "
-                  "dropped, a tunnel pressed flat, a thin wall crossed) rather than lose detail "
-                  "(max_jump, --max-jump: %g%s; 0 reaches the target at any cost)",
-                  jump_price_, jump_price_ / std::max(jump_from_, jump_floor_),
-                  eased() ? "before the vetoes were eased" : "so far", jump_from_,
+                  "%s; the surface would change abruptly (a part dropped, a tunnel pressed flat, "
+                  "a thin wall crossed) rather than lose detail (max_jump, --max-jump: %g%s; 0 "
+                  "reaches the target at any cost)",
+                  jump_price_, jump_price_ / std::max(jump_from_, jump_floor_), from,
                   opt_.max_price_jump, eased() ? ", half of it once eased" : "");
     rep_.stop_detail = why;
     rep_.stop_cause = StopCause::PriceJump;
