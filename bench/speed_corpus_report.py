@@ -48,9 +48,15 @@ def machine():
 
 def main(src, dst):
     runs = defaultdict(dict)  # (set, mesh, ratio) -> (method, load) -> row
+    times = defaultdict(list)  # the same run repeated (the loaded ones): its median stands
     for r in csv.DictReader(open(src)):
         if r["seconds"]:
-            runs[(r["set"], r["mesh"], r["ratio"])][(r["method"], r["load"])] = r
+            key = (r["set"], r["mesh"], r["ratio"])
+            runs[key].setdefault((r["method"], r["load"]), dict(r))
+            times[key + (r["method"], r["load"])].append(float(r["seconds"]))
+    for key, row in runs.items():
+        for run, r in row.items():
+            r["seconds"] = str(statistics.median(times[key + run]))
     ratios = sorted({k[2] for k in runs}, key=float, reverse=True)
     t = lambda m, method, load="quiet": float(m[(method, load)]["seconds"])
     out = [
@@ -62,7 +68,8 @@ def main(src, dst):
         + ", ".join(f"{float(r):g}" for r in ratios) + " of the faces. For each mesh, ours on one thread "
         "(`ours`) and with the default thread count (`ours-t0`: every core), meshoptimizer and QECD "
         "run one after the other as child processes of `vrs_bench`; time is the simplification call. "
-        "*Loaded*: the same two runs of ours while another process keeps one core busy.",
+        "*Loaded*: the same two runs of ours, three times in turn, while another process keeps "
+        "one core busy; each one's median.",
         "",
         "### Ratios",
         "",
