@@ -50,11 +50,11 @@ def main(src, dst):
     out += ["", "## In the browser", "",
             "The viewer page in headless Chromium (SwiftShader), served by `vrsimplify serve` at "
             "20 MB/s (`tests/web/progressive_test.mjs --stream-only`): the base drawn after how "
-            "many bytes (the throttled server's chunks arrive several at a time), the longest "
-            "refining step (records applied within 8 ms a frame and handed to the GPU) and the "
-            "longest frame (that and the drawing, which SwiftShader does on the CPU: seconds at "
-            "a million faces), the decoder alone in records a second. The elephant: its base "
-            "and the decoder only.", "",
+            "many bytes (the page asks for the header and the base by range requests, then "
+            "streams the records), the longest refining step (records applied within 8 ms a "
+            "frame and handed to the GPU) and the longest frame (that and the drawing, which "
+            "SwiftShader does on the CPU: seconds at a million faces), the decoder alone in "
+            "records a second. The elephant: its base and the decoder only.", "",
             "| mesh | base drawn after | all applied at | longest refining step | longest frame | decoder | checks | validator | time to write (s) |",
             "|---|---|---|---|---|---|---|---|---|"]
     for r in rows:
