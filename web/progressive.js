@@ -241,7 +241,7 @@ export class ProgressiveDecoder {
 // whole file is one streamed GET.
 export async function streamProgressive(url, { onBase, onBytes = () => {} }) {
   const kFirst = 1 << 16; // the first range: the header, and a small file's whole base
-  let buffer = new Uint8Array(kFirst), length = 0, total = 0;
+  let buffer = null, length = 0, total = 0; // sized once the total is known
   let header = null, layout = null, decoder = null, fed = 0;
   const take = (value) => {
     if (length + value.length > buffer.length) {
