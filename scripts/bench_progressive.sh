@@ -57,7 +57,8 @@ for name in bunny_loop2 elephant_textured; do
   echo "{\"mesh\":\"$name\",\"progressive\":$(cat "$work/p.json"),\"seconds\":$seconds,\"peak_kb\":$kb,\
 \"bytes\":{\"progressive\":$(size "$work/p.glb"),\"full\":$(size "$work/full.glb"),\"chain\":$(size "$work/chain.glb"),\
 \"full_meshopt\":$(size "$work/full-c.glb"),\"chain_meshopt\":$(size "$work/chain-c.glb"),\
-\"progressive_gzip\":$(gz "$work/p.glb"),\"full_gzip\":$(gz "$work/full.glb"),\"chain_gzip\":$(gz "$work/chain.glb")},\
+\"progressive_gzip\":$(gz "$work/p.glb"),\"full_gzip\":$(gz "$work/full.glb"),\"chain_gzip\":$(gz "$work/chain.glb"),\
+\"full_meshopt_gzip\":$(gz "$work/full-c.glb")},\
 \"prefix\":$prefix,\"drawn\":\"$drawn\",\"alone\":\"$alone\",\"validator\":\"$validator\",\
 \"browser\":$("$python" -c 'import json, sys; print(json.dumps(json.load(open(sys.argv[1]))))' "$work/browser/figures.json"),\
 \"browser_checks\":\"$(grep -c '^ok' "$work/browser.txt") ok, $(grep -c '^FAIL' "$work/browser.txt") failed\"}" >>"$results"

@@ -199,7 +199,8 @@ int run_progressive(const GlbRequest& r, const vrs::Mesh& mesh, const Arrays& a,
               100.0 * double(layout.base_bytes) / double(layout.file_bytes),
               rep.target_reached ? "" : ", stopped short: ",
               rep.target_reached ? "" : rep.stop_detail.c_str());
-  std::printf("records: %zu insertions, %zu bytes (%zu of them faces, %.1f a vertex)\n",
+  std::printf("records: %zu insertions, %zu bytes (%zu of them faces, %.1f a vertex; the rest "
+              "the vertices)\n",
               layout.insertions, layout.stream_bytes, layout.record_topology_bytes,
               layout.insertions ? double(layout.record_topology_bytes) / double(layout.insertions)
                                 : 0.0);

@@ -30,6 +30,7 @@ export function describeProgressive(json) {
   const indexView = json.bufferViews[index.bufferView];
   const recordView = json.bufferViews[ext.bufferView];
   return {
+    version: ext.version,
     stride: vertexView.byteStride,
     baseVertices: position.count,
     baseIndices: index.count,
@@ -52,20 +53,63 @@ export function describeProgressive(json) {
   };
 }
 
+const nextSide = (s) => (s % 3 === 2 ? s - 2 : s + 1);
+const C = (s) => 2 * s - (s % 3); // where side s's first corner is in ProgressiveDecoder.mesh
+const A = (s) => 2 * s - (s % 3) + 3; // where the side across it is
+const distinct = (a, n, below) => {
+  for (let i = 0; i < n; i++) {
+    if (a[i] >= below) return false;
+    for (let j = 0; j < i; j++) if (a[i] === a[j]) return false;
+  }
+  return true;
+};
+const unzigzag = (z) => ((z & 1) === 0 ? z / 2 : -(z + 1) / 2); // z & 1: its low bit, any size
+
 export class ProgressiveDecoder {
   // `binary`: the binary chunk's bytes so far (at least the base's).
   constructor(layout, binary) {
+    if (layout.version !== 2)
+      throw new Error(`a ${EXTENSION} stream of version ${layout.version}: this reader knows version 2`);
     this.layout = layout;
     const { stride, baseVertices, baseIndices } = layout;
     this.vertices = new Uint8Array(layout.vertexCount * stride);
     this.vertices.set(binary.subarray(layout.vertexStart, layout.vertexStart + baseVertices * stride));
+    this.floats = new Float32Array(this.vertices.buffer);
+    this.ints = new Int32Array(this.vertices.buffer);
     this.indices = new Uint32Array(layout.faceCount * 3);
     const wide = layout.indexType === 5125;
     const src = binary.slice(layout.indexStart, layout.indexStart + baseIndices * (wide ? 4 : 2)).buffer;
     this.indices.set(wide ? new Uint32Array(src) : new Uint16Array(src));
+    // The decoder's own copy of the faces, six numbers a face: its corners, then for each side
+    // (3 * face + c, from corner c to c + 1) the side across it, -1 for none (one cache line
+    // for both); the base's sides paired by the base rule (docs/progressive.md).
+    const M = (this.mesh = new Int32Array(layout.faceCount * 6));
+    const alone = new Map(), idx = this.indices, V = layout.vertexCount;
+    for (let s = 0; s < baseIndices; s++) {
+      M[C(s)] = idx[s];
+      M[A(s)] = -1;
+    }
+    for (let s = 0; s < baseIndices; s++) {
+      const a = idx[s], b = idx[nextSide(s)];
+      const t = alone.get(b * V + a);
+      if (t !== undefined) {
+        M[A(s)] = t;
+        M[A(t)] = s;
+        alone.delete(b * V + a);
+      } else if (!alone.has(a * V + b)) alone.set(a * V + b, s);
+    }
+    // The vertex values in coding order.
+    // (Flat: offset in floats or bytes, count, 1 for floats.)
+    const at = (name) => layout.attributes[name]?.offset;
+    const groups = [0, 3, 1];
+    if (at("NORMAL") !== undefined) groups.push(at("NORMAL") / 4, 3, 1);
+    if (at("COLOR_0") !== undefined) groups.push(at("COLOR_0"), 4, 0);
+    if (at("TEXCOORD_0") !== undefined) groups.push(at("TEXCOORD_0") / 4, 2, 1);
+    this.groups = Int32Array.from(groups);
     this.vertexCount = baseVertices;
     this.faceCount = baseIndices / 3;
     this.applied = 0;
+    this.previousFirst = 0;
     this.records = new Uint8Array(layout.recordBytes);
     this.received = 0; // record bytes in
     this.at = 0; // the next record's offset
@@ -131,64 +175,108 @@ export class ProgressiveDecoder {
       : V - 1 - (ref - added - corners);
   }
 
+  // The patch walked from face `first` (docs/progressive.md): its faces into `slots`; false
+  // when the steering bits are not all in.
+  walk(first, count, slots) {
+    const M = this.mesh, r = this.records;
+    let n = 1, used = 0;
+    slots[0] = first;
+    for (let i = 0; n < count; i++) {
+      if (i === n) throw new Error("a record's patch walk ends early: not a stream this reads");
+      for (let c = 0; c < 3 && n < count; c++) {
+        const t = M[6 * slots[i] + 3 + c];
+        if (t < 0) continue;
+        const q = (t - (t % 3)) / 3;
+        let listed = false;
+        for (let j = 0; j < n && !listed; j++) listed = slots[j] === q;
+        if (listed) continue;
+        const byte = this.p + (used >> 3);
+        if (byte >= this.received) return false;
+        if ((r[byte] >> (used & 7)) & 1) slots[n++] = q;
+        used++;
+      }
+    }
+    this.p += (used + 7) >> 3;
+    return true;
+  }
+
   // One record at `at`: the offset after it, or -1 when its bytes are not all in. Scratch
   // arrays, no allocation: a record is a few dozen bytes and there are millions.
   applyOne(at) {
-    const r = this.records, stride = this.layout.stride;
+    const stride = this.layout.stride;
     const s = this.scratch ?? (this.scratch = {
       slots: new Int32Array(256), patch: new Int32Array(768), ring: new Int32Array(260),
-      faces: new Int32Array(768), from: new Int32Array(768), to: new Int32Array(768) });
+      faces: new Int32Array(768), from: new Int32Array(768), to: new Int32Array(768),
+      outer: new Int32Array(4 * 768), sides: new Int32Array(768), known: new Int32Array(768),
+      outside: new Int32Array(768), edge: new Int32Array(260), bits: new Int32Array(1) });
+    s.asFloat ??= new Float32Array(s.bits.buffer); // a float's bits, through s.bits
     this.p = at;
     const head = this.varint();
     if (head < 0) return -1;
-    const k = Math.floor(head / 8), shape = (head >> 1) & 3;
+    const k = Math.floor(head / 16), listed = (head >> 3) & 1, shape = (head >> 1) & 3;
     let added = 1, apexRef = 0;
     if (head & 1) {
       if ((added = this.varint()) < 0) return -1;
       if (shape && (apexRef = this.varint()) < 0) return -1;
     }
-    if (k > 256) throw new Error(`a record of ${k} faces: not a progressive stream this reads`);
-    const vertexAt = this.p;
-    this.p += added * stride;
-    if (this.p > this.received) return -1;
+    if (k > 256 || added > 256) throw new Error(`a record of ${k} faces: not a progressive stream this reads`);
     const reused = shape === CLOSED_FAN ? k - 2 : shape === OPEN_FAN ? k - 1 : this.varint();
     if (reused < 0) return -1;
-    const F = this.faceCount, idx = this.indices;
-    const { slots, patch, ring, faces, from, to } = s;
+    if (reused > k) throw new Error(`a record replacing ${reused} faces with ${k}: not a progressive stream this reads`);
+    const F = this.faceCount, M = this.mesh;
+    const { slots, patch, ring, faces, from, to, outside, edge } = s;
+    let first = this.previousFirst;
+    if (listed) {
+      for (let i = 0; i < reused; i++) {
+        const back = this.varint();
+        if (back < 0) return -1;
+        slots[i] = F - 1 - back;
+      }
+    } else {
+      const step = this.varint();
+      if (step < 0) return -1;
+      first += unzigzag(step);
+      if (!this.walk(first, reused, slots)) return -1;
+    }
     for (let i = 0; i < reused; i++) {
-      const back = this.varint();
-      if (back < 0) return -1;
-      const slot = (slots[i] = F - 1 - back);
-      patch[3 * i] = idx[3 * slot];
-      patch[3 * i + 1] = idx[3 * slot + 1];
-      patch[3 * i + 2] = idx[3 * slot + 2];
+      const slot = slots[i];
+      patch[3 * i] = M[6 * slot];
+      patch[3 * i + 1] = M[6 * slot + 1];
+      patch[3 * i + 2] = M[6 * slot + 2];
     }
     const corners = 3 * reused;
     this.added = added;
     this.corners = corners;
+    let length = 0; // the ring's
     if (shape === CLOSED_FAN || shape === OPEN_FAN) {
-      const start = this.varint();
+      const start = shape === OPEN_FAN ? this.varint() : 0;
       if (start < 0) return -1;
-      // The patch's outline: the sides it walks and never back.
+      // The patch's outline: its sides with no patch face across, in the patch's order.
       let sides = 0;
-      for (let t = 0; t < corners; t++) {
-        const a = patch[t], b = patch[t % 3 === 2 ? t - 2 : t + 1];
-        let back = false;
-        for (let u = 0; u < corners && !back; u++)
-          back = patch[u] === b && patch[u % 3 === 2 ? u - 2 : u + 1] === a;
-        if (!back) {
-          from[sides] = a;
-          to[sides++] = b;
+      for (let i = 0, t = 0; i < reused; i++)
+        for (let c = 0; c < 3; c++, t++) {
+          const across = M[6 * slots[i] + 3 + c];
+          if (across >= 0) {
+            const q = (across - (across % 3)) / 3;
+            let inPatch = false;
+            for (let j = 0; j < reused && !inPatch; j++) inPatch = slots[j] === q;
+            if (inPatch) continue;
+          }
+          from[sides] = patch[t];
+          to[sides] = patch[nextSide(t)];
+          outside[sides++] = across;
         }
-      }
-      const length = shape === CLOSED_FAN ? k : k + 1;
-      ring[0] = this.vertex(start);
-      for (let n = 1; n < length; n++) {
+      length = shape === CLOSED_FAN ? k : k + 1;
+      ring[0] = from[start];
+      // Each fan side's outline side (edge[i]: from ring[i] to ring[i + 1]), for writeFaces.
+      for (let n = 1; n <= k; n++) {
         const a = ring[n - 1];
         let i = 0;
         while (i < sides && from[i] !== a) i++;
-        ring[n] = to[i];
+        edge[n - 1] = i;
+        if (n < length) ring[n] = to[i];
       }
+      this.outlineSides = sides;
       const apex = this.vertex(apexRef);
       for (let i = 0; i < k; i++) {
         faces[3 * i] = apex;
@@ -198,7 +286,7 @@ export class ProgressiveDecoder {
     } else if (shape === LISTED_RING) {
       const open = this.varint();
       if (open < 0) return -1;
-      const length = k + open;
+      length = k + open;
       for (let i = 0; i < length; i++) {
         const ref = this.varint();
         if (ref < 0) return -1;
@@ -217,19 +305,138 @@ export class ProgressiveDecoder {
         faces[i] = this.vertex(ref);
       }
     }
+    // A fan around its one new vertex, with a ring of distinct older vertices, takes shortcuts.
+    const V = this.vertexCount;
+    const fan = (shape === CLOSED_FAN || shape === OPEN_FAN) && added === 1 && faces[0] === V &&
+      distinct(ring, length, V);
+    if (!this.readVertices(added, k, fan ? length : 0)) return -1;
     // Whole: write it.
-    const vs = this.vertices, bytes = added * stride, dst = this.vertexCount * stride;
-    for (let i = 0; i < bytes; i++) vs[dst + i] = r[vertexAt + i];
+    if (!listed) this.previousFirst = first;
     this.vertexCount += added;
+    this.writeFaces(reused, k, fan, length === k);
+    return this.p;
+  }
+
+  // The record's new vertices, each value its prediction (the mean of the older vertices its
+  // faces touch) plus a residual; false when their bytes are not all in. They go into the
+  // vertex buffer past the vertices drawn, so a record not whole changes nothing drawn.
+  readVertices(added, k, fanRing) {
+    const { faces, known, bits, asFloat } = this.scratch, stride = this.layout.stride, w = stride / 4;
+    const V = this.vertexCount, f32 = this.floats, i32 = this.ints, u8 = this.vertices;
+    const groups = this.groups;
+    for (let j = 0; j < added; j++) {
+      const v = V + j;
+      let n = 0;
+      if (fanRing > 0) { // a fan's apex: its ring, distinct vertices, all older
+        for (; n < fanRing; n++) known[n] = this.scratch.ring[n];
+      } else for (let i = 0; i < 3 * k; i += 3) {
+        if (faces[i] !== v && faces[i + 1] !== v && faces[i + 2] !== v) continue;
+        for (let c = 0; c < 3; c++) {
+          const u = faces[i + c];
+          if (u >= V) continue;
+          let seen = false;
+          for (let q = 0; q < n && !seen; q++) seen = known[q] === u;
+          if (!seen) known[n++] = u;
+        }
+      }
+      for (let g = 0; g < groups.length; g += 3)
+        for (let c = 0, o = groups[g], isFloat = groups[g + 2]; c < groups[g + 1]; c++, o++) {
+          const z = this.varint();
+          if (z < 0) return false;
+          const d = unzigzag(z);
+          if (isFloat) {
+            if (n) {
+              let sum = 0;
+              for (let q = 0; q < n; q++) sum += f32[known[q] * w + o];
+              asFloat[0] = sum / n;
+            } else asFloat[0] = j ? f32[(v - 1) * w + o] : 0;
+            const b = bits[0], ordered = (b < 0 ? b ^ 0x7fffffff : b) + d;
+            i32[v * w + o] = ordered < 0 ? ordered ^ 0x7fffffff : ordered;
+          } else {
+            let predicted = 0;
+            if (n) {
+              let sum = 0;
+              for (let q = 0; q < n; q++) sum += u8[known[q] * stride + o];
+              predicted = Math.floor(sum / n + 0.5);
+            } else if (j) predicted = u8[(v - 1) * stride + o];
+            u8[v * stride + o] = (predicted + d) & 0xff;
+          }
+        }
+    }
+    return true;
+  }
+
+  // The record's k faces into the patch's slots, the rest appended; their sides paired by the
+  // record rule (docs/progressive.md).
+  writeFaces(reused, k, fan, closed) {
+    const s = this.scratch, { slots, faces, outer, sides } = s, idx = this.indices, M = this.mesh;
+    let outerCount = 0;
+    if (fan) // the outline's sides across lose their pairing, as outer sides do below
+      for (let e = 0; e < this.outlineSides; e++) if (s.outside[e] >= 0) M[A(s.outside[e])] = -1;
+    for (let i = 0; i < reused && !fan; i++)
+      for (let c = 0; c < 3; c++) {
+        const side = 3 * slots[i] + c, t = M[A(side)];
+        if (t < 0) continue;
+        const q = (t - (t % 3)) / 3;
+        let inPatch = false;
+        for (let j = 0; j < reused && !inPatch; j++) inPatch = slots[j] === q;
+        if (inPatch) continue;
+        outer[4 * outerCount] = M[C(side)];
+        outer[4 * outerCount + 1] = M[C(nextSide(side))];
+        outer[4 * outerCount + 2] = t;
+        outer[4 * outerCount + 3] = 0;
+        outerCount++;
+        M[A(t)] = -1;
+      }
     for (let i = 0; i < k; i++) {
       const slot = i < reused ? slots[i] : this.faceCount++;
-      idx[3 * slot] = faces[3 * i];
-      idx[3 * slot + 1] = faces[3 * i + 1];
-      idx[3 * slot + 2] = faces[3 * i + 2];
+      for (let c = 0; c < 3; c++) {
+        idx[3 * slot + c] = M[6 * slot + c] = faces[3 * i + c];
+        M[6 * slot + 3 + c] = -1;
+        sides[3 * i + c] = 3 * slot + c;
+      }
       if (3 * slot < this.indexLow) this.indexLow = 3 * slot;
       if (3 * slot + 3 > this.indexHigh) this.indexHigh = 3 * slot + 3;
     }
-    return this.p;
+    if (fan) {
+      // A fan around a new apex with a ring of distinct vertices: the record rule pairs each
+      // face with its neighbours in the fan and its outline side with the side across that
+      // outline side (the same pairs, found without searching).
+      for (let i = 0; i < k; i++) {
+        const side = sides[3 * i + 1], t = s.outside[s.edge[i]];
+        M[A(side)] = t;
+        if (t >= 0) M[A(t)] = side;
+        if (i + 1 < k || closed) {
+          const next = sides[i + 1 < k ? 3 * i + 3 : 0], mine = sides[3 * i + 2];
+          M[A(mine)] = next;
+          M[A(next)] = mine;
+        }
+      }
+      return;
+    }
+    const n = 3 * k;
+    for (let i = 0; i < n; i++) {
+      const side = sides[i];
+      if (M[A(side)] >= 0) continue;
+      const a = M[C(side)], b = M[C(nextSide(side))];
+      let paired = false;
+      for (let o = 0; o < outerCount; o++)
+        if (!outer[4 * o + 3] && outer[4 * o] === a && outer[4 * o + 1] === b) {
+          outer[4 * o + 3] = 1;
+          M[A(side)] = outer[4 * o + 2];
+          M[A(outer[4 * o + 2])] = side;
+          paired = true;
+          break;
+        }
+      for (let j = i + 1; j < n && !paired; j++) {
+        const t = sides[j];
+        if (M[A(t)] < 0 && M[C(t)] === b && M[C(nextSide(t))] === a) {
+          M[A(side)] = t;
+          M[A(t)] = side;
+          paired = true;
+        }
+      }
+    }
   }
 }
 
@@ -240,7 +447,7 @@ export class ProgressiveDecoder {
 // over several chunks at a time, and the base waited for bytes past its own. Elsewhere the
 // whole file is one streamed GET.
 export async function streamProgressive(url, { onBase, onBytes = () => {} }) {
-  const kFirst = 1 << 16; // the first range: the header, and a small file's whole base
+  const kFirst = 1 << 14; // the first range: the header, and a small file's whole base
   let buffer = null, length = 0, total = 0; // sized once the total is known
   let header = null, layout = null, decoder = null, fed = 0;
   const take = (value) => {

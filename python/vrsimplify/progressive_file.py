@@ -5,6 +5,7 @@ tools can load this file alone."""
 from __future__ import annotations
 
 import json
+import math
 import struct
 from dataclasses import dataclass
 
@@ -124,22 +125,21 @@ def read_progressive(source, records: int | None = None) -> ProgressiveFile:
     sview = views[ext["bufferView"]]
     stream = binary[sview.get("byteOffset", 0) : sview.get("byteOffset", 0) + sview["byteLength"]]
 
-    vertex_rows = [base_vertices]
-    vertex_count = base_count
-    live = [list(map(int, faces[i : i + 3])) for i in range(0, len(faces), 3)]
+    if ext.get("version") != 2:
+        raise ValueError("a %s stream of version %s: this reader knows version 2" % (EXTENSION, ext.get("version")))
+    state = _State(faces, base_vertices.tobytes(), stride, layout)
     limit = ext["insertions"] if records is None else min(records, ext["insertions"])
     at = applied = 0
     try:
         while applied < limit:
-            at, added = _apply_record(stream, at, stride, live, vertex_rows, vertex_count)
-            vertex_count += added
+            at = state.apply(stream, at)
             applied += 1
     except EOFError:  # a prefix of the file: the last record is not whole
         pass
-    vertices = np.concatenate(vertex_rows) if len(vertex_rows) > 1 else base_vertices
+    vertices = np.frombuffer(bytes(state.vertices), np.uint8).reshape(-1, stride)
     return ProgressiveFile(
         vertices=vertices,
-        faces=np.asarray(live, dtype=np.int64).reshape(-1, 3),
+        faces=np.asarray(state.corners, dtype=np.int64).reshape(-1, 3),
         applied=applied,
         insertions=ext["insertions"],
         complete_faces=ext["faceCount"],
@@ -148,70 +148,214 @@ def read_progressive(source, records: int | None = None) -> ProgressiveFile:
     )
 
 
-def _apply_record(stream, at, stride, live, vertex_rows, before):
-    """Applies the record at ``at``; returns where the next begins and the vertices it added
-    (EOFError: the record is not whole)."""
-    head, at = _varint(stream, at)
-    k, shape, irregular = head >> 3, (head >> 1) & 3, head & 1
-    added, apex_ref = 1, 0
-    if irregular:
-        added, at = _varint(stream, at)
-        if shape:
-            apex_ref, at = _varint(stream, at)
-    if at + added * stride > len(stream):
-        raise EOFError
-    new_rows = np.frombuffer(stream[at : at + added * stride], np.uint8).reshape(added, stride)
-    at += added * stride
-    if shape in (_CLOSED_FAN, _OPEN_FAN):
-        reused = k - 2 if shape == _CLOSED_FAN else k - 1
-    else:
-        reused, at = _varint(stream, at)
-    count = len(live)
-    slots = []
-    for _ in range(reused):
-        back, at = _varint(stream, at)
-        slots.append(count - 1 - back)
-    patch = [v for s in slots for v in live[s]]
+def _zigzag(z: int) -> int:
+    return z >> 1 if z % 2 == 0 else -((z + 1) >> 1)
 
-    def vertex(ref):
-        if ref < added:
-            return before + ref
-        if ref < added + len(patch):
-            return patch[ref - added]
-        return before - 1 - (ref - added - len(patch))
 
-    if shape in (_CLOSED_FAN, _OPEN_FAN):
-        first, at = _varint(stream, at)
-        # The outline: each side the patch walks once and never back.
-        sides = {(patch[t + c], patch[t + (c + 1) % 3]) for t in range(0, len(patch), 3) for c in range(3)}
-        outline = {a: b for a, b in sides if (b, a) not in sides}
-        ring = [vertex(first)]
-        while len(ring) < (k if shape == _CLOSED_FAN else k + 1):
-            ring.append(outline[ring[-1]])
-        apex = vertex(apex_ref)
-        n = len(ring)
-        new_faces = [[apex, ring[i], ring[(i + 1) % n]] for i in range(k)]
-    elif shape == _LISTED_RING:
-        open_, at = _varint(stream, at)
-        ring = []
-        for _ in range(k + open_):
-            r, at = _varint(stream, at)
-            ring.append(vertex(r))
-        apex = vertex(apex_ref)
-        n = len(ring)
-        new_faces = [[apex, ring[i], ring[(i + 1) % n]] for i in range(k)]
-    else:
-        new_faces = []
-        for _ in range(k):
-            f = []
-            for _ in range(3):
-                r, at = _varint(stream, at)
-                f.append(vertex(r))
-            new_faces.append(f)
-    vertex_rows.append(new_rows)
-    for i, f in enumerate(new_faces):
-        if i < reused:
-            live[slots[i]] = f
+def _ordered(bits: int) -> int:
+    """A float's bits (as a signed 32-bit integer) in an order that follows the floats'."""
+    return bits ^ 0x7FFFFFFF if bits < 0 else bits
+
+
+class _State:
+    """What a decoder keeps: the vertex bytes, the faces (3 corners a slot) and, for each side
+    of each face (3 * slot + c, from corner c to c + 1), the side across it or -1."""
+
+    def __init__(self, base_indices, base_vertices: bytes, stride: int, layout: dict):
+        self.stride = stride
+        self.vertices = bytearray(base_vertices)
+        self.corners = [int(i) for i in base_indices]
+        self.across = [-1] * len(self.corners)
+        # Vertex fields in coding order: (offset, count, is_float).
+        self.groups = [(0, 3, True)]
+        if layout["normal"] is not None:
+            self.groups.append((layout["normal"], 3, True))
+        if layout["color"] is not None:
+            self.groups.append((layout["color"], 4, False))
+        if layout["uv"] is not None:
+            self.groups.append((layout["uv"], 2, True))
+        alone = {}  # the base rule: each side pairs with the first earlier lone side back
+        for s in range(len(self.corners)):
+            a, b = self.corners[s], self.corners[_next(s)]
+            t = alone.pop((b, a), None)
+            if t is not None:
+                self.across[s], self.across[t] = t, s
+            else:
+                alone.setdefault((a, b), s)
+        self.previous_first = 0
+
+    @property
+    def vertex_count(self) -> int:
+        return len(self.vertices) // self.stride
+
+    def walk(self, first: int, count: int, stream: bytes, at: int) -> tuple[list[int], int]:
+        """The patch: from face ``first``, one steering bit per side whose face across is not
+        listed yet, until ``count`` faces; returns them and where the bits end."""
+        order, used = [first], 0
+        i = 0
+        while len(order) < count:
+            if i == len(order):
+                raise ValueError("a record's patch walk ends early: not a stream this reads")
+            for c in range(3):
+                if len(order) == count:
+                    break
+                t = self.across[3 * order[i] + c]
+                if t < 0 or t // 3 in order:
+                    continue
+                if at + used // 8 >= len(stream):
+                    raise EOFError
+                if stream[at + used // 8] >> (used % 8) & 1:
+                    order.append(t // 3)
+                used += 1
+            i += 1
+        return order, at + (used + 7) // 8
+
+    def write(self, patch: list[int], faces: list[list[int]]) -> None:
+        """The faces into the patch's slots, the rest appended; their sides paired by the
+        record rule."""
+        outer = []  # [a, b, side across, used]
+        for p in patch:
+            for c in range(3):
+                s = 3 * p + c
+                t = self.across[s]
+                if t < 0 or t // 3 in patch:
+                    continue
+                outer.append([self.corners[s], self.corners[_next(s)], t, False])
+                self.across[t] = -1
+        sides = []
+        for i, f in enumerate(faces):
+            if i < len(patch):
+                slot = patch[i]
+            else:
+                slot = len(self.corners) // 3
+                self.corners.extend((0, 0, 0))
+                self.across.extend((-1, -1, -1))
+            for c in range(3):
+                self.corners[3 * slot + c] = f[c]
+                self.across[3 * slot + c] = -1
+                sides.append(3 * slot + c)
+        for i, s in enumerate(sides):
+            if self.across[s] >= 0:
+                continue
+            a, b = self.corners[s], self.corners[_next(s)]
+            paired = False
+            for o in outer:
+                if not o[3] and o[0] == a and o[1] == b:
+                    o[3] = paired = True
+                    self.across[s], self.across[o[2]] = o[2], s
+                    break
+            if paired:
+                continue
+            for t in sides[i + 1 :]:
+                if self.across[t] < 0 and self.corners[t] == b and self.corners[_next(t)] == a:
+                    self.across[s], self.across[t] = t, s
+                    break
+
+    def apply(self, stream: bytes, at: int) -> int:
+        """Applies the record at ``at``; returns where the next begins (EOFError: the record is
+        not whole)."""
+        head, at = _varint(stream, at)
+        k, listed, shape, irregular = head >> 4, (head >> 3) & 1, (head >> 1) & 3, head & 1
+        added, apex_ref = 1, 0
+        if irregular:
+            added, at = _varint(stream, at)
+            if shape:
+                apex_ref, at = _varint(stream, at)
+        if shape in (_CLOSED_FAN, _OPEN_FAN):
+            reused = k - 2 if shape == _CLOSED_FAN else k - 1
         else:
-            live.append(f)
-    return at, added
+            reused, at = _varint(stream, at)
+        if reused > k:
+            raise ValueError("a record replacing %d faces with %d: not a stream this reads" % (reused, k))
+        count = len(self.corners) // 3
+        if listed:
+            slots = []
+            for _ in range(reused):
+                back, at = _varint(stream, at)
+                slots.append(count - 1 - back)
+        else:
+            step, at = _varint(stream, at)
+            first = self.previous_first + _zigzag(step)
+            self.previous_first = first
+            slots, at = self.walk(first, reused, stream, at)
+        patch = [self.corners[3 * s + c] for s in slots for c in range(3)]
+        before = self.vertex_count
+
+        def vertex(ref):
+            if ref < added:
+                return before + ref
+            if ref < added + len(patch):
+                return patch[ref - added]
+            return before - 1 - (ref - added - len(patch))
+
+        if shape in (_CLOSED_FAN, _OPEN_FAN):
+            start = 0
+            if shape == _OPEN_FAN:
+                start, at = _varint(stream, at)
+            # The outline: the patch's sides with no patch face across, in the patch's order.
+            outline = [(patch[t], patch[_next(t)]) for t in range(len(patch))
+                       if self.across[3 * slots[t // 3] + t % 3] < 0
+                       or self.across[3 * slots[t // 3] + t % 3] // 3 not in slots]
+            ring = [outline[start][0]]
+            while len(ring) < (k if shape == _CLOSED_FAN else k + 1):
+                ring.append(next(b for a, b in outline if a == ring[-1]))
+            apex = vertex(apex_ref)
+            n = len(ring)
+            new_faces = [[apex, ring[i], ring[(i + 1) % n]] for i in range(k)]
+        elif shape == _LISTED_RING:
+            open_, at = _varint(stream, at)
+            ring = []
+            for _ in range(k + open_):
+                r, at = _varint(stream, at)
+                ring.append(vertex(r))
+            apex = vertex(apex_ref)
+            n = len(ring)
+            new_faces = [[apex, ring[i], ring[(i + 1) % n]] for i in range(k)]
+        else:
+            new_faces = []
+            for _ in range(k):
+                f = []
+                for _ in range(3):
+                    r, at = _varint(stream, at)
+                    f.append(vertex(r))
+                new_faces.append(f)
+        # The new vertices: each value its prediction plus a residual.
+        rows = bytearray()
+        for j in range(added):
+            v = before + j
+            known = []
+            for f in new_faces:
+                if v in f:
+                    known.extend(u for u in f if u < before and u not in known)
+            row = bytearray(self.stride)
+            for offset, width, floats in self.groups:
+                for i in range(width):
+                    z, at = _varint(stream, at)
+                    if floats:
+                        o = offset + 4 * i
+                        if known:
+                            mean = sum(struct.unpack_from("<f", self.vertices, self.stride * u + o)[0] for u in known)
+                            predicted = struct.pack("<f", mean / len(known))
+                        elif j:
+                            predicted = bytes(rows[self.stride * (j - 1) + o : self.stride * (j - 1) + o + 4])
+                        else:
+                            predicted = bytes(4)
+                        m = _ordered(struct.unpack("<i", predicted)[0]) + _zigzag(z)
+                        struct.pack_into("<i", row, o, _ordered(m))
+                    else:
+                        o = offset + i
+                        if known:
+                            predicted = math.floor(sum(self.vertices[self.stride * u + o] for u in known) / len(known) + 0.5)
+                        elif j:
+                            predicted = rows[self.stride * (j - 1) + o]
+                        else:
+                            predicted = 0
+                        row[o] = (predicted + _zigzag(z)) & 0xFF
+            rows += row
+        self.vertices += rows
+        self.write(slots, new_faces)
+        return at
+
+
+def _next(side: int) -> int:
+    return side - 2 if side % 3 == 2 else side + 1

@@ -77,6 +77,16 @@ grep -q 'extensionsRequired' "$out/elephant-p.glb" && fail "progressive: no exte
 "$bin" "$out/tex/bunny.obj" "$out/tex/sub/bunny-p.glb" --progressive >/dev/null || fail "textured --progressive"
 validate "$out/tex/sub/bunny-p.glb"
 grep -q '"uri":"../bunny.png"' "$out/tex/sub/bunny-p.glb" || fail "progressive: the texture's URI"
+# The browser's decoder (tests/web/progressive_decoded.mjs, in Node) rebuilds each full mesh
+# bit for bit, fed whole or in pieces: plain, textured (seams), colored.
+decoded() { # input progressive.glb full.glb
+  "$bin" "$1" "$3" --lods 1 >/dev/null && node "$here/progressive_decoded.mjs" "$2" "$3" >/dev/null ||
+    fail "progressive: $2 decodes to the full mesh"
+}
+decoded "$data/elephant.off" "$out/elephant-p.glb" "$out/elephant-full.glb"
+decoded "$out/tex/bunny.obj" "$out/tex/sub/bunny-p.glb" "$out/tex/sub/bunny-full.glb"
+"$bin" "$out/fandisk.ply" "$out/fandisk-p.glb" --progressive >/dev/null || fail "colored --progressive"
+decoded "$out/fandisk.ply" "$out/fandisk-p.glb" "$out/fandisk-full.glb"
 
 # Refusals: one line, exit 2 (usage) or 1, no file.
 refuse() { # expected-exit output args...
