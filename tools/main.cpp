@@ -87,7 +87,7 @@ const char* kUsage =
     "                                  by MSFT_lod; N: N levels halving from 1 (the input).\n"
     "                                  Without --lods a .glb holds the --ratio level alone\n"
     "  --progressive [--base R]        a progressive mesh: the base (R of the faces, default\n"
-    "                                  0.005) drawn by any glTF reader, then one record a\n"
+    "                                  0.003) drawn by any glTF reader, then one record a\n"
     "                                  removed vertex, coarsest first, that puts it back\n"
     "                                  (VRS_mesh_progressive, docs/progressive.md): all of\n"
     "                                  them give the input exactly\n"
@@ -211,7 +211,7 @@ int main(int argc, char** argv) {
   std::vector<double> lods;     // --lods: levels of detail into one .glb
   bool compress = false;        // --compress: the .glb with EXT_meshopt_compression
   bool progressive = false;     // --progressive: a base mesh and one record a vertex, one .glb
-  double base = 0.005;          // --base: the progressive base's share of the faces
+  double base = 0.003;          // --base: the progressive base's share of the faces
   bool base_given = false;
   std::string not_tiled; // the first option a tiled run would not honour
   for (int i = 1; i < argc; ++i) {

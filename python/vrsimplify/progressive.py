@@ -83,7 +83,7 @@ class Progressive:
         return np.where(corners >= 0, flat[np.maximum(corners, 0)], -1)
 
 
-def progressive(mesh_vertices, mesh_faces, /, *, base: float = 0.005, mode: str = "surface",
+def progressive(mesh_vertices, mesh_faces, /, *, base: float = 0.003, mode: str = "surface",
                 simplify_boundary: bool = False, keep_boundary: bool = False,
                 max_jump: float = 10.0, feature_angle: float = 0.0, seams=None,
                 corner_keys=None) -> Progressive:
