@@ -84,19 +84,19 @@ export class ProgressiveDecoder {
     // (3 * face + c, from corner c to c + 1) the side across it, -1 for none (one cache line
     // for both); the base's sides paired by the base rule (docs/progressive.md).
     const M = (this.mesh = new Int32Array(layout.faceCount * 6));
-    const alone = new Map(), idx = this.indices, V = layout.vertexCount;
+    const waiting = new Map(), idx = this.indices, V = layout.vertexCount;
     for (let s = 0; s < baseIndices; s++) {
       M[C(s)] = idx[s];
       M[A(s)] = -1;
     }
     for (let s = 0; s < baseIndices; s++) {
       const a = idx[s], b = idx[nextSide(s)];
-      const t = alone.get(b * V + a);
+      const t = waiting.get(b * V + a);
       if (t !== undefined) {
         M[A(s)] = t;
         M[A(t)] = s;
-        alone.delete(b * V + a);
-      } else if (!alone.has(a * V + b)) alone.set(a * V + b, s);
+        waiting.delete(b * V + a);
+      } else if (!waiting.has(a * V + b)) waiting.set(a * V + b, s);
     }
     // The vertex values in coding order.
     // (Flat: offset in floats or bytes, count, 1 for floats.)

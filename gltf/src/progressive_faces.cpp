@@ -14,20 +14,20 @@ uint32_t next_corner(uint32_t side) {
 
 } // namespace
 
-// The base rule: sides in order; a side from a to b pairs with the first side before it from b
-// to a that is still alone, if any.
+// The base rule: sides in order, at most one waiting for each way between two vertices; a side
+// from a to b pairs with the one waiting from b to a, else waits unless one from a to b does.
 ProgressiveFaces::ProgressiveFaces(const std::vector<uint32_t>& base)
     : corners_(base), across_(base.size(), kNone) {
-  std::map<std::pair<uint32_t, uint32_t>, uint32_t> alone;
+  std::map<std::pair<uint32_t, uint32_t>, uint32_t> waiting;
   for (uint32_t s = 0; s < corners_.size(); ++s) {
     const uint32_t a = corners_[s], b = corners_[next_corner(s)];
-    const auto back = alone.find({b, a});
-    if (back != alone.end()) {
+    const auto back = waiting.find({b, a});
+    if (back != waiting.end()) {
       across_[s] = back->second;
       across_[back->second] = s;
-      alone.erase(back);
+      waiting.erase(back);
     } else {
-      alone.emplace(std::make_pair(a, b), s); // the first stays
+      waiting.emplace(std::make_pair(a, b), s); // no second waits
     }
   }
 }

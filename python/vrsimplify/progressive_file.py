@@ -174,14 +174,14 @@ class _State:
             self.groups.append((layout["color"], 4, False))
         if layout["uv"] is not None:
             self.groups.append((layout["uv"], 2, True))
-        alone = {}  # the base rule: each side pairs with the first earlier lone side back
+        waiting = {}  # the base rule: at most one side waits for each way between two vertices
         for s in range(len(self.corners)):
             a, b = self.corners[s], self.corners[_next(s)]
-            t = alone.pop((b, a), None)
+            t = waiting.pop((b, a), None)
             if t is not None:
                 self.across[s], self.across[t] = t, s
             else:
-                alone.setdefault((a, b), s)
+                waiting.setdefault((a, b), s)
         self.previous_first = 0
 
     @property
