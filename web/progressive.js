@@ -81,8 +81,8 @@ export class ProgressiveDecoder {
     const src = binary.slice(layout.indexStart, layout.indexStart + baseIndices * (wide ? 4 : 2)).buffer;
     this.indices.set(wide ? new Uint32Array(src) : new Uint16Array(src));
     // The decoder's own copy of the faces, six numbers a face: its corners, then for each side
-    // (3 * face + c, from corner c to c + 1) the side across it, -1 for none (one cache line
-    // for both); the base's sides paired by the base rule (docs/progressive.md).
+    // (3 * face + c, from corner c to c + 1) the side across it, -1 for none; the base's sides
+    // paired by the base rule (docs/progressive.md).
     const M = (this.mesh = new Int32Array(layout.faceCount * 6));
     const waiting = new Map(), idx = this.indices, V = layout.vertexCount;
     for (let s = 0; s < baseIndices; s++) {
@@ -98,8 +98,7 @@ export class ProgressiveDecoder {
         waiting.delete(b * V + a);
       } else if (!waiting.has(a * V + b)) waiting.set(a * V + b, s);
     }
-    // The vertex values in coding order.
-    // (Flat: offset in floats or bytes, count, 1 for floats.)
+    // The vertex values in coding order, flat: offset (in floats or bytes), count, 1 for floats.
     const at = (name) => layout.attributes[name]?.offset;
     const groups = [0, 3, 1];
     if (at("NORMAL") !== undefined) groups.push(at("NORMAL") / 4, 3, 1);
