@@ -61,11 +61,8 @@ bool ProgressiveFaces::walk(uint32_t first, const std::vector<uint32_t>& patch,
 // first unused outer side that runs the same way, else with the first later new side that runs
 // back, else with none.
 void ProgressiveFaces::write(const std::vector<uint32_t>& patch, const std::vector<Face>& faces) {
-  struct Outer {
-    uint32_t a, b, side;
-    bool used;
-  };
-  std::vector<Outer> outer;
+  std::vector<Outer>& outer = outer_;
+  outer.clear();
   for (uint32_t p : patch)
     for (uint32_t c = 0; c < 3; ++c) {
       const uint32_t s = 3 * p + c, t = across_[s];
@@ -73,7 +70,8 @@ void ProgressiveFaces::write(const std::vector<uint32_t>& patch, const std::vect
       outer.push_back({corners_[s], corners_[next_corner(s)], t, false});
       across_[t] = kNone;
     }
-  std::vector<uint32_t> sides; // the new faces' sides, in order
+  std::vector<uint32_t>& sides = sides_; // the new faces' sides, in order
+  sides.clear();
   for (size_t i = 0; i < faces.size(); ++i) {
     uint32_t slot;
     if (i < patch.size()) {

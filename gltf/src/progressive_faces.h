@@ -36,8 +36,14 @@ class ProgressiveFaces {
   void write(const std::vector<uint32_t>& patch, const std::vector<Face>& faces);
 
  private:
+  struct Outer {
+    uint32_t a, b, side;
+    bool used;
+  };
   std::vector<uint32_t> corners_; // 3 a slot
   std::vector<uint32_t> across_;  // per side (3 * slot + c, from corner c to c + 1)
+  std::vector<Outer> outer_;      // write()'s scratch, kept between records
+  std::vector<uint32_t> sides_;
 };
 
 } // namespace vrs

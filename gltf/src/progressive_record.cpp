@@ -182,10 +182,10 @@ RecordWriter::Shape RecordWriter::fan_shape(uint32_t apex, size_t& start) {
     ring_.push_back(turned_[i][1]);
   if (!closed) ring_.push_back(turned_[order_.back()][2]);
   faces_.clear();
-  const std::vector<uint32_t> input_slot = input_slot_;
-  input_slot_.clear();
+  slots_in_order_.clear();
   for (uint32_t i : order_)
-    faces_.push_back(turned_[i]), input_slot_.push_back(input_slot[i]);
+    faces_.push_back(turned_[i]), slots_in_order_.push_back(input_slot_[i]);
+  input_slot_.swap(slots_in_order_);
   // The ring as the outline gives it: each side once, the patch's way round.
   bool fan = outline_.size() == sides && patch_.size() == 3 * (sides - 2) &&
              (!closed || ring_[0] == outline_[0].first);
