@@ -148,7 +148,7 @@ def read_progressive(source, records: int | None = None) -> ProgressiveFile:
     )
 
 
-def _zigzag(z: int) -> int:
+def _unzigzag(z: int) -> int:
     return z >> 1 if z % 2 == 0 else -((z + 1) >> 1)
 
 
@@ -275,7 +275,7 @@ class _State:
                 slots.append(count - 1 - back)
         else:
             step, at = _varint(stream, at)
-            first = self.previous_first + _zigzag(step)
+            first = self.previous_first + _unzigzag(step)
             self.previous_first = first
             slots, at = self.walk(first, reused, stream, at)
         patch = [self.corners[3 * s + c] for s in slots for c in range(3)]
@@ -323,10 +323,12 @@ class _State:
         rows = bytearray()
         for j in range(added):
             v = before + j
-            known = []
+            known = []  # the older vertices of its faces, each once, in the faces' order
             for f in new_faces:
                 if v in f:
-                    known.extend(u for u in f if u < before and u not in known)
+                    for u in f:
+                        if u < before and u not in known:
+                            known.append(u)
             row = bytearray(self.stride)
             for offset, width, floats in self.groups:
                 for i in range(width):
@@ -340,7 +342,7 @@ class _State:
                             predicted = bytes(rows[self.stride * (j - 1) + o : self.stride * (j - 1) + o + 4])
                         else:
                             predicted = bytes(4)
-                        m = _ordered(struct.unpack("<i", predicted)[0]) + _zigzag(z)
+                        m = _ordered(struct.unpack("<i", predicted)[0]) + _unzigzag(z)
                         struct.pack_into("<i", row, o, _ordered(m))
                     else:
                         o = offset + i
@@ -350,7 +352,7 @@ class _State:
                             predicted = rows[self.stride * (j - 1) + o]
                         else:
                             predicted = 0
-                        row[o] = (predicted + _zigzag(z)) & 0xFF
+                        row[o] = (predicted + _unzigzag(z)) & 0xFF
             rows += row
         self.vertices += rows
         self.write(slots, new_faces)
