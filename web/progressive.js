@@ -6,6 +6,8 @@
 
 export const EXTENSION = "VRS_mesh_progressive";
 const CLOSED_FAN = 1, OPEN_FAN = 2, LISTED_RING = 3;
+const RICE_ESCAPE = 16, RICE_SPREAD_SHIFT = 3; // docs/progressive.md, "the vertices"
+const POWERS_OF_TWO = Float64Array.from({ length: 64 }, (_, i) => 2 ** i);
 
 // The JSON chunk and where the binary chunk starts, once the first bytes are in (null before).
 export function readHeader(bytes) {
@@ -54,8 +56,6 @@ export function describeProgressive(json) {
 }
 
 const nextSide = (s) => (s % 3 === 2 ? s - 2 : s + 1);
-const C = (s) => 2 * s - (s % 3); // where side s's first corner is in ProgressiveDecoder.mesh
-const A = (s) => 2 * s - (s % 3) + 3; // where the side across it is
 const distinct = (a, n, below) => {
   for (let i = 0; i < n; i++) {
     if (a[i] >= below) return false;
@@ -63,13 +63,17 @@ const distinct = (a, n, below) => {
   }
   return true;
 };
+// The Rice parameter of a value whose known vertices lie up to `spread` (< 2^33) from its
+// prediction: the spread's bit length less RICE_SPREAD_SHIFT.
+const riceParameter = (spread) => Math.max(0,
+  (spread < 2 ** 31 ? 32 - Math.clz32(spread) : spread < 2 ** 32 ? 32 : 33) - RICE_SPREAD_SHIFT);
 const unzigzag = (z) => ((z & 1) === 0 ? z / 2 : -(z + 1) / 2); // z & 1: its low bit, any size
 
 export class ProgressiveDecoder {
   // `binary`: the binary chunk's bytes so far (at least the base's).
   constructor(layout, binary) {
-    if (layout.version !== 2)
-      throw new Error(`a ${EXTENSION} stream of version ${layout.version}: this reader knows version 2`);
+    if (layout.version !== 3)
+      throw new Error(`a ${EXTENSION} stream of version ${layout.version}: this reader knows version 3`);
     this.layout = layout;
     const { stride, baseVertices, baseIndices } = layout;
     this.vertices = new Uint8Array(layout.vertexCount * stride);
@@ -80,21 +84,18 @@ export class ProgressiveDecoder {
     const wide = layout.indexType === 5125;
     const src = binary.slice(layout.indexStart, layout.indexStart + baseIndices * (wide ? 4 : 2)).buffer;
     this.indices.set(wide ? new Uint32Array(src) : new Uint16Array(src));
-    // The decoder's own copy of the faces, six numbers a face: its corners, then for each side
-    // (3 * face + c, from corner c to c + 1) the side across it, -1 for none; the base's sides
-    // paired by the base rule (docs/progressive.md).
-    const M = (this.mesh = new Int32Array(layout.faceCount * 6));
+    // The faces' corners are the index buffer; beside it, for each side (3 * face + c, from
+    // corner c to c + 1), the side across it, -1 for none: the base's sides paired by the base
+    // rule (docs/progressive.md).
+    const X = (this.across = new Int32Array(layout.faceCount * 3));
     const waiting = new Map(), idx = this.indices, V = layout.vertexCount;
-    for (let s = 0; s < baseIndices; s++) {
-      M[C(s)] = idx[s];
-      M[A(s)] = -1;
-    }
+    X.fill(-1, 0, baseIndices);
     for (let s = 0; s < baseIndices; s++) {
       const a = idx[s], b = idx[nextSide(s)];
       const t = waiting.get(b * V + a);
       if (t !== undefined) {
-        M[A(s)] = t;
-        M[A(t)] = s;
+        X[s] = t;
+        X[t] = s;
         waiting.delete(b * V + a);
       } else if (!waiting.has(a * V + b)) waiting.set(a * V + b, s);
     }
@@ -112,7 +113,8 @@ export class ProgressiveDecoder {
     this.records = new Uint8Array(layout.recordBytes);
     this.received = 0; // record bytes in
     this.at = 0; // the next record's offset
-    this.p = 0; // the reading position within a record (applyOne)
+    this.p = 0; // the reading position within a record (applyOne), in bytes
+    this.bitAt = 0; // and in bits of that byte, within the record's run of bits
     this.added = 0; // the record's new vertices and patch corners (vertex())
     this.corners = 0;
     this.scratch = null;
@@ -174,28 +176,92 @@ export class ProgressiveDecoder {
       : V - 1 - (ref - added - corners);
   }
 
-  // The patch walked from face `first` (docs/progressive.md): its faces into `slots`; false
-  // when the steering bits are not all in.
+  // The record's run of bits (docs/progressive.md), lowest bit of each byte first, read from
+  // byte this.p, bit this.bitAt: the next bit, or -1 when its byte is not in.
+  bit() {
+    if (this.p >= this.received) return -1;
+    const b = (this.records[this.p] >> this.bitAt) & 1;
+    if (++this.bitAt === 8) {
+      this.bitAt = 0;
+      this.p++;
+    }
+    return b;
+  }
+
+  // The next n bits as a number, the first the lowest (-1: not all in).
+  bitsOf(n) {
+    if (n === 0) return 0;
+    if (this.p + ((this.bitAt + n - 1) >> 3) >= this.received) return -1;
+    const r = this.records;
+    let value = 0, scale = 1;
+    while (n > 0) {
+      const take = Math.min(8 - this.bitAt, n);
+      value += ((r[this.p] >> this.bitAt) & ((1 << take) - 1)) * scale;
+      scale *= 1 << take;
+      n -= take;
+      if ((this.bitAt += take) === 8) {
+        this.bitAt = 0;
+        this.p++;
+      }
+    }
+    return value;
+  }
+
+  // A Rice code of parameter k: ones and a zero, then k bits; 16 ones escape to a bit length
+  // (6 bits) and that many bits. -1: not all in.
+  rice(k) {
+    const p = this.p;
+    if (p + 4 < this.received) { // the ones from a window of 25 bits or more
+      const r = this.records, at = this.bitAt;
+      const w = (r[p] | (r[p + 1] << 8) | (r[p + 2] << 16) | (r[p + 3] << 24)) >>> at;
+      const zeros = ~w, q = 31 - Math.clz32(zeros & -zeros); // w's lowest zero
+      const ones = at + q + 1;
+      if (q >= 0 && q < RICE_ESCAPE && ones <= 32) {
+        if (k <= 24 && ones + k <= 32) {
+          this.p = p + ((ones + k) >> 3);
+          this.bitAt = (ones + k) & 7;
+          return (q << k) | ((w >>> (q + 1)) & ((1 << k) - 1));
+        }
+        this.p = p + (ones >> 3);
+        this.bitAt = ones & 7;
+        const low = this.bitsOf(k);
+        return low < 0 ? -1 : q * POWERS_OF_TWO[k] + low;
+      }
+    }
+    let q = 0;
+    for (;;) {
+      const b = this.bit();
+      if (b < 0) return -1;
+      if (b === 0) break;
+      if (++q === RICE_ESCAPE) {
+        const length = this.bitsOf(6);
+        return length < 0 ? -1 : this.bitsOf(length);
+      }
+    }
+    const low = this.bitsOf(k);
+    return low < 0 ? -1 : q * POWERS_OF_TWO[k] + low;
+  }
+
+  // The patch walked from face `first` (docs/progressive.md), steered by the record's bits:
+  // its faces into `slots`; false when the bits are not all in.
   walk(first, count, slots) {
-    const M = this.mesh, r = this.records;
-    let n = 1, used = 0;
+    const X = this.across;
+    let n = 1;
     slots[0] = first;
     for (let i = 0; n < count; i++) {
       if (i === n) throw new Error("a record's patch walk ends early: not a stream this reads");
       for (let c = 0; c < 3 && n < count; c++) {
-        const t = M[6 * slots[i] + 3 + c];
+        const t = X[3 * slots[i] + c];
         if (t < 0) continue;
         const q = (t - (t % 3)) / 3;
         let listed = false;
         for (let j = 0; j < n && !listed; j++) listed = slots[j] === q;
         if (listed) continue;
-        const byte = this.p + (used >> 3);
-        if (byte >= this.received) return false;
-        if ((r[byte] >> (used & 7)) & 1) slots[n++] = q;
-        used++;
+        const b = this.bit();
+        if (b < 0) return false;
+        if (b) slots[n++] = q;
       }
     }
-    this.p += (used + 7) >> 3;
     return true;
   }
 
@@ -207,7 +273,8 @@ export class ProgressiveDecoder {
       slots: new Int32Array(256), patch: new Int32Array(768), ring: new Int32Array(260),
       faces: new Int32Array(768), from: new Int32Array(768), to: new Int32Array(768),
       outer: new Int32Array(4 * 768), sides: new Int32Array(768), known: new Int32Array(768),
-      outside: new Int32Array(768), edge: new Int32Array(260), bits: new Int32Array(1) });
+      outside: new Int32Array(768), edge: new Int32Array(260), refs: new Int32Array(768),
+      bits: new Int32Array(1) });
     s.asFloat ??= new Float32Array(s.bits.buffer); // a float's bits, through s.bits
     this.p = at;
     const head = this.varint();
@@ -222,8 +289,9 @@ export class ProgressiveDecoder {
     const reused = shape === CLOSED_FAN ? k - 2 : shape === OPEN_FAN ? k - 1 : this.varint();
     if (reused < 0) return -1;
     if (reused > k) throw new Error(`a record replacing ${reused} faces with ${k}: not a progressive stream this reads`);
-    const F = this.faceCount, M = this.mesh;
-    const { slots, patch, ring, faces, from, to, outside, edge } = s;
+    const F = this.faceCount, X = this.across, idx = this.indices;
+    const { slots, patch, ring, faces, from, to, outside, edge, refs } = s;
+    // First the record's numbers, then its run of bits: the walk's steering, the vertices.
     let first = this.previousFirst;
     if (listed) {
       for (let i = 0; i < reused; i++) {
@@ -235,26 +303,34 @@ export class ProgressiveDecoder {
       const step = this.varint();
       if (step < 0) return -1;
       first += unzigzag(step);
-      if (!this.walk(first, reused, slots)) return -1;
     }
+    let start = 0, open = 0, refCount = 0;
+    if (shape === OPEN_FAN && (start = this.varint()) < 0) return -1;
+    if (shape === LISTED_RING && (open = this.varint()) < 0) return -1;
+    if (shape === LISTED_RING || shape === 0) {
+      refCount = shape === LISTED_RING ? k + open : 3 * k;
+      if (refCount > refs.length) throw new Error("a record's ring is too long: not a progressive stream this reads");
+      for (let i = 0; i < refCount; i++)
+        if ((refs[i] = this.varint()) < 0) return -1;
+    }
+    this.bitAt = 0;
+    if (!listed && !this.walk(first, reused, slots)) return -1;
     for (let i = 0; i < reused; i++) {
       const slot = slots[i];
-      patch[3 * i] = M[6 * slot];
-      patch[3 * i + 1] = M[6 * slot + 1];
-      patch[3 * i + 2] = M[6 * slot + 2];
+      patch[3 * i] = idx[3 * slot];
+      patch[3 * i + 1] = idx[3 * slot + 1];
+      patch[3 * i + 2] = idx[3 * slot + 2];
     }
     const corners = 3 * reused;
     this.added = added;
     this.corners = corners;
     let length = 0; // the ring's
     if (shape === CLOSED_FAN || shape === OPEN_FAN) {
-      const start = shape === OPEN_FAN ? this.varint() : 0;
-      if (start < 0) return -1;
       // The patch's outline: its sides with no patch face across, in the patch's order.
       let sides = 0;
       for (let i = 0, t = 0; i < reused; i++)
         for (let c = 0; c < 3; c++, t++) {
-          const across = M[6 * slots[i] + 3 + c];
+          const across = X[3 * slots[i] + c];
           if (across >= 0) {
             const q = (across - (across % 3)) / 3;
             let inPatch = false;
@@ -276,32 +352,18 @@ export class ProgressiveDecoder {
         if (n < length) ring[n] = to[i];
       }
       this.outlineSides = sides;
-      const apex = this.vertex(apexRef);
-      for (let i = 0; i < k; i++) {
-        faces[3 * i] = apex;
-        faces[3 * i + 1] = ring[i];
-        faces[3 * i + 2] = ring[i + 1 < length ? i + 1 : 0];
-      }
     } else if (shape === LISTED_RING) {
-      const open = this.varint();
-      if (open < 0) return -1;
-      length = k + open;
-      for (let i = 0; i < length; i++) {
-        const ref = this.varint();
-        if (ref < 0) return -1;
-        ring[i] = this.vertex(ref);
-      }
+      length = refCount;
+      for (let i = 0; i < length; i++) ring[i] = this.vertex(refs[i]);
+    } else {
+      for (let i = 0; i < 3 * k; i++) faces[i] = this.vertex(refs[i]);
+    }
+    if (shape) {
       const apex = this.vertex(apexRef);
       for (let i = 0; i < k; i++) {
         faces[3 * i] = apex;
         faces[3 * i + 1] = ring[i];
         faces[3 * i + 2] = ring[i + 1 < length ? i + 1 : 0];
-      }
-    } else {
-      for (let i = 0; i < 3 * k; i++) {
-        const ref = this.varint();
-        if (ref < 0) return -1;
-        faces[i] = this.vertex(ref);
       }
     }
     // A fan around its one new vertex, with a ring of distinct older vertices, takes shortcuts.
@@ -313,7 +375,7 @@ export class ProgressiveDecoder {
     if (!listed) this.previousFirst = first;
     this.vertexCount += added;
     this.writeFaces(reused, k, fan, length === k);
-    return this.p;
+    return this.bitAt ? this.p + 1 : this.p;
   }
 
   // The record's new vertices, each value its prediction (the mean of the older vertices its
@@ -338,27 +400,47 @@ export class ProgressiveDecoder {
           if (!seen) known[n++] = u;
         }
       }
+      // Each value: its prediction, how far the known vertices lie from it (the Rice code's
+      // parameter: the farther of their least and greatest), its residual.
       for (let g = 0; g < groups.length; g += 3)
         for (let c = 0, o = groups[g], isFloat = groups[g + 2]; c < groups[g + 1]; c++, o++) {
-          const z = this.varint();
-          if (z < 0) return false;
-          const d = unzigzag(z);
+          let predicted = 0, spread = 0;
           if (isFloat) {
             if (n) {
-              let sum = 0;
-              for (let q = 0; q < n; q++) sum += f32[known[q] * w + o];
+              let sum = 0, low = Infinity, high = -Infinity;
+              for (let q = 0; q < n; q++) {
+                const at = known[q] * w + o, x = i32[at], ordered = x < 0 ? x ^ 0x7fffffff : x;
+                sum += f32[at];
+                low = Math.min(low, ordered);
+                high = Math.max(high, ordered);
+              }
               asFloat[0] = sum / n;
-            } else asFloat[0] = j ? f32[(v - 1) * w + o] : 0;
-            const b = bits[0], ordered = (b < 0 ? b ^ 0x7fffffff : b) + d;
+              const b = bits[0];
+              predicted = b < 0 ? b ^ 0x7fffffff : b;
+              spread = Math.max(high - predicted, predicted - low);
+            } else {
+              const b = j ? i32[(v - 1) * w + o] : 0;
+              predicted = b < 0 ? b ^ 0x7fffffff : b;
+            }
+            const z = this.rice(riceParameter(spread));
+            if (z < 0) return false;
+            const ordered = predicted + unzigzag(z);
             i32[v * w + o] = ordered < 0 ? ordered ^ 0x7fffffff : ordered;
           } else {
-            let predicted = 0;
             if (n) {
-              let sum = 0;
-              for (let q = 0; q < n; q++) sum += u8[known[q] * stride + o];
+              let sum = 0, low = 255, high = 0;
+              for (let q = 0; q < n; q++) {
+                const x = u8[known[q] * stride + o];
+                sum += x;
+                if (x < low) low = x;
+                if (x > high) high = x;
+              }
               predicted = Math.floor(sum / n + 0.5);
+              spread = Math.max(high - predicted, predicted - low);
             } else if (j) predicted = u8[(v - 1) * stride + o];
-            u8[v * stride + o] = (predicted + d) & 0xff;
+            const z = this.rice(riceParameter(spread));
+            if (z < 0) return false;
+            u8[v * stride + o] = (predicted + unzigzag(z)) & 0xff;
           }
         }
     }
@@ -368,30 +450,30 @@ export class ProgressiveDecoder {
   // The record's k faces into the patch's slots, the rest appended; their sides paired by the
   // record rule (docs/progressive.md).
   writeFaces(reused, k, fan, closed) {
-    const s = this.scratch, { slots, faces, outer, sides } = s, idx = this.indices, M = this.mesh;
+    const s = this.scratch, { slots, faces, outer, sides } = s, idx = this.indices, X = this.across;
     let outerCount = 0;
     if (fan) // the outline's sides across lose their pairing, as outer sides do below
-      for (let e = 0; e < this.outlineSides; e++) if (s.outside[e] >= 0) M[A(s.outside[e])] = -1;
+      for (let e = 0; e < this.outlineSides; e++) if (s.outside[e] >= 0) X[s.outside[e]] = -1;
     for (let i = 0; i < reused && !fan; i++)
       for (let c = 0; c < 3; c++) {
-        const side = 3 * slots[i] + c, t = M[A(side)];
+        const side = 3 * slots[i] + c, t = X[side];
         if (t < 0) continue;
         const q = (t - (t % 3)) / 3;
         let inPatch = false;
         for (let j = 0; j < reused && !inPatch; j++) inPatch = slots[j] === q;
         if (inPatch) continue;
-        outer[4 * outerCount] = M[C(side)];
-        outer[4 * outerCount + 1] = M[C(nextSide(side))];
+        outer[4 * outerCount] = idx[side];
+        outer[4 * outerCount + 1] = idx[nextSide(side)];
         outer[4 * outerCount + 2] = t;
         outer[4 * outerCount + 3] = 0;
         outerCount++;
-        M[A(t)] = -1;
+        X[t] = -1;
       }
     for (let i = 0; i < k; i++) {
       const slot = i < reused ? slots[i] : this.faceCount++;
       for (let c = 0; c < 3; c++) {
-        idx[3 * slot + c] = M[6 * slot + c] = faces[3 * i + c];
-        M[6 * slot + 3 + c] = -1;
+        idx[3 * slot + c] = faces[3 * i + c];
+        X[3 * slot + c] = -1;
         sides[3 * i + c] = 3 * slot + c;
       }
       if (3 * slot < this.indexLow) this.indexLow = 3 * slot;
@@ -403,12 +485,12 @@ export class ProgressiveDecoder {
       // outline side (the same pairs, found without searching).
       for (let i = 0; i < k; i++) {
         const side = sides[3 * i + 1], t = s.outside[s.edge[i]];
-        M[A(side)] = t;
-        if (t >= 0) M[A(t)] = side;
+        X[side] = t;
+        if (t >= 0) X[t] = side;
         if (i + 1 < k || closed) {
           const next = sides[i + 1 < k ? 3 * i + 3 : 0], mine = sides[3 * i + 2];
-          M[A(mine)] = next;
-          M[A(next)] = mine;
+          X[mine] = next;
+          X[next] = mine;
         }
       }
       return;
@@ -416,22 +498,22 @@ export class ProgressiveDecoder {
     const n = 3 * k;
     for (let i = 0; i < n; i++) {
       const side = sides[i];
-      if (M[A(side)] >= 0) continue;
-      const a = M[C(side)], b = M[C(nextSide(side))];
+      if (X[side] >= 0) continue;
+      const a = idx[side], b = idx[nextSide(side)];
       let paired = false;
       for (let o = 0; o < outerCount; o++)
         if (!outer[4 * o + 3] && outer[4 * o] === a && outer[4 * o + 1] === b) {
           outer[4 * o + 3] = 1;
-          M[A(side)] = outer[4 * o + 2];
-          M[A(outer[4 * o + 2])] = side;
+          X[side] = outer[4 * o + 2];
+          X[outer[4 * o + 2]] = side;
           paired = true;
           break;
         }
       for (let j = i + 1; j < n && !paired; j++) {
         const t = sides[j];
-        if (M[A(t)] < 0 && M[C(t)] === b && M[C(nextSide(t))] === a) {
-          M[A(side)] = t;
-          M[A(t)] = side;
+        if (X[t] < 0 && idx[t] === b && idx[nextSide(t)] === a) {
+          X[side] = t;
+          X[t] = side;
           paired = true;
         }
       }

@@ -1,15 +1,22 @@
 // How a progressive record writes numbers (docs/progressive.md): varints, bits, and each new
 // vertex's attributes as residuals from a prediction the decoder makes too, the mean of the
-// older vertices its faces touch. Floats are subtracted as ordered integers, so that the coding
-// is lossless and a close prediction costs few bits.
+// older vertices its faces touch, in Rice codes. Floats are subtracted as ordered integers, so
+// that the coding is lossless and a close prediction costs few bits.
 #pragma once
 
+#include <algorithm>
 #include <cmath>
 #include <cstdint>
+#include <cstdlib>
 #include <cstring>
 #include <vector>
 
 namespace vrs {
+
+// The Rice codes' escape (that many ones) and how many bits below the spread's length a
+// residual's parameter is (docs/progressive.md).
+constexpr int kRiceEscape = 16;
+constexpr int kRiceSpreadShift = 3;
 
 inline void put_varint(std::vector<uint8_t>& out, uint64_t x) {
   while (x >= 0x80) {
@@ -69,13 +76,42 @@ inline uint64_t zigzag(int64_t d) {
   return d >= 0 ? uint64_t(d) << 1 : (uint64_t(-d) << 1) - 1;
 }
 
+inline int bit_length(uint64_t x) {
+  int n = 0;
+  for (; x; x >>= 1)
+    ++n;
+  return n;
+}
+
+// A residual's zigzag `z` as a Rice code whose `k` low bits are written as they are: q = z >> k
+// ones and a zero, then the k bits; from 16 ones on, the ones end there and z follows as its
+// bit length (6 bits) and its bits.
+inline void put_rice(BitWriter& bits, uint64_t z, int k) {
+  const uint64_t q = z >> k;
+  if (q < kRiceEscape) {
+    bits.put((uint64_t(1) << q) - 1, int(q) + 1);
+    bits.put(z, k);
+  } else {
+    bits.put((uint64_t(1) << kRiceEscape) - 1, kRiceEscape);
+    bits.put(uint64_t(bit_length(z)), 6);
+    bits.put(z, bit_length(z));
+  }
+}
+
+// The Rice parameter of a value whose known vertices lie up to `spread` from its prediction
+// (in the units the residual counts): residuals run about as wide as the ring does.
+inline int rice_parameter(uint64_t spread) {
+  return std::max(0, bit_length(spread) - kRiceSpreadShift);
+}
+
 // The residuals of the vertex at `actual` against the mean of `known` (each a vertex's bytes);
-// with none known, against `fallback` (nullptr: zeros): each value's, zigzagged, as a varint.
-inline void put_residuals(std::vector<uint8_t>& out, const VertexFields& fields,
-                          const uint8_t* actual, const std::vector<const uint8_t*>& known,
-                          const uint8_t* fallback) {
+// with none known, against `fallback` (nullptr: zeros): each value's zigzagged residual as a
+// Rice code, its parameter from how far the known vertices' own values lie from the prediction.
+inline void put_residuals(BitWriter& out, const VertexFields& fields, const uint8_t* actual,
+                          const std::vector<const uint8_t*>& known, const uint8_t* fallback) {
   for (const VertexFields::Group& g : fields.groups)
     for (uint32_t i = 0; i < g.count; ++i) {
+      uint64_t spread = 0;
       if (g.floats) {
         const uint32_t at = g.at + 4 * i;
         float predicted = 0, x;
@@ -89,8 +125,13 @@ inline void put_residuals(std::vector<uint8_t>& out, const VertexFields& fields,
         } else if (fallback) {
           std::memcpy(&predicted, fallback + at, 4);
         }
+        const int64_t p = ordered_bits(predicted);
+        for (const uint8_t* v : known) {
+          std::memcpy(&x, v + at, 4);
+          spread = std::max(spread, uint64_t(std::llabs(ordered_bits(x) - p)));
+        }
         std::memcpy(&x, actual + at, 4);
-        put_varint(out, zigzag(ordered_bits(x) - ordered_bits(predicted)));
+        put_rice(out, zigzag(ordered_bits(x) - p), rice_parameter(spread));
       } else {
         const uint32_t at = g.at + i;
         int64_t predicted = 0;
@@ -102,7 +143,9 @@ inline void put_residuals(std::vector<uint8_t>& out, const VertexFields& fields,
         } else if (fallback) {
           predicted = fallback[at];
         }
-        put_varint(out, zigzag(int64_t(actual[at]) - predicted));
+        for (const uint8_t* v : known)
+          spread = std::max(spread, uint64_t(std::llabs(int64_t(v[at]) - predicted)));
+        put_rice(out, zigzag(int64_t(actual[at]) - predicted), rice_parameter(spread));
       }
     }
 }

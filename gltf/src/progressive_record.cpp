@@ -127,9 +127,6 @@ bool RecordWriter::write(uint32_t r, std::vector<uint8_t>& stream) {
   } else {
     put_varint(stream, zigzag(int64_t(patch_slots_[0]) - previous_first_));
     previous_first_ = patch_slots_[0];
-    BitWriter steer(stream);
-    for (uint8_t b : bits_)
-      steer.put(b, 1);
   }
   if (shape == kOpenFan) {
     put_varint(stream, start);
@@ -142,8 +139,15 @@ bool RecordWriter::write(uint32_t r, std::vector<uint8_t>& stream) {
       for (uint32_t v : f)
         put_varint(stream, ref(v));
   }
-  topology_bytes_ += stream.size() - record_start;
-  put_vertices(stream, before);
+  // Then one run of bits to the record's end: the walk's steering bits, the new vertices.
+  topology_bits_ += 8 * (stream.size() - record_start) + (listed ? 0 : bits_.size());
+  {
+    BitWriter bits(stream);
+    if (!listed)
+      for (uint8_t b : bits_)
+        bits.put(b, 1);
+    put_vertices(bits, before);
+  }
   // As the decoder does: the faces in order into the patch's slots, the rest at the end.
   for (size_t i = 0; i < k; ++i)
     slot_at_[input_slot_[i]] =
@@ -201,7 +205,7 @@ RecordWriter::Shape RecordWriter::fan_shape(uint32_t apex, size_t& start) {
 }
 
 // Each new vertex against the mean of the older vertices its faces touch.
-void RecordWriter::put_vertices(std::vector<uint8_t>& stream, size_t before) {
+void RecordWriter::put_vertices(BitWriter& bits, size_t before) {
   for (uint32_t v = uint32_t(before); v < table_.size(); ++v) {
     known_.clear();
     for (const Face& f : faces_)
@@ -210,7 +214,7 @@ void RecordWriter::put_vertices(std::vector<uint8_t>& stream, size_t before) {
           if (u < before &&
               std::find(known_.begin(), known_.end(), vertex_bytes(u)) == known_.end())
             known_.push_back(vertex_bytes(u));
-    put_residuals(stream, fields_, vertex_bytes(v), known_,
+    put_residuals(bits, fields_, vertex_bytes(v), known_,
                   v > before ? vertex_bytes(v - 1) : nullptr);
   }
 }

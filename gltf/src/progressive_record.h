@@ -30,7 +30,7 @@ class RecordWriter {
   bool write(uint32_t r, std::vector<uint8_t>& stream);
 
   size_t faces() const { return state_.size(); }
-  size_t topology_bytes() const { return topology_bytes_; } // all but the vertices
+  size_t topology_bytes() const { return (topology_bits_ + 7) / 8; } // all but the vertices
 
  private:
   // A record's shapes: its faces (apex, ring[i], ring[i + 1]) around a fan whose ring is the
@@ -39,7 +39,7 @@ class RecordWriter {
   enum Shape : uint32_t { kCorners = 0, kClosedFan = 1, kOpenFan = 2, kListedRing = 3 };
 
   Shape fan_shape(uint32_t apex, size_t& start);
-  void put_vertices(std::vector<uint8_t>& stream, size_t before);
+  void put_vertices(BitWriter& bits, size_t before);
   const uint8_t* vertex_bytes(uint32_t v) const {
     return table_.bytes().data() + size_t(v) * table_.stride();
   }
@@ -52,7 +52,7 @@ class RecordWriter {
   ProgressiveFaces state_;
   std::vector<uint32_t> slot_at_; // input slot -> decoder slot (kNone: empty)
   int64_t previous_first_ = 0;    // the last walked patch's first face
-  size_t topology_bytes_ = 0;
+  size_t topology_bits_ = 0;
   // Scratch, kept between records.
   std::vector<Face> faces_, turned_;
   std::vector<uint32_t> order_, input_slot_, slots_in_order_, patch_slots_, walked_, patch_, ring_;

@@ -70,7 +70,7 @@ std::string write_progressive_glb(const std::string& path, const float* position
   const int stream_view = j.view(stream_at, stream.size(), 0, 0);
   auto num = [](size_t x) { return std::to_string(x); };
   j.primitive_extension("VRS_mesh_progressive",
-                        "{\"version\":2,\"bufferView\":" + num(size_t(stream_view)) +
+                        "{\"version\":3,\"bufferView\":" + num(size_t(stream_view)) +
                             ",\"insertions\":" + num(p.insertion_count()) + ",\"vertexCount\":" +
                             num(table.size()) + ",\"faceCount\":" + num(records.faces()) + "}");
   const double ratio = slot_count ? double(p.base_slots.size()) / double(slot_count) : 1.0;

@@ -155,6 +155,11 @@ def test_progressive_glb_decodes_to_the_input_and_every_prefix_to_a_mesh(tmp_pat
     assert applied == whole.insertions
     with pytest.raises(ValueError):
         vrsimplify.read_progressive(full)
+    # A file of another coding (version 2: residuals as varints) is refused, not misread.
+    older = data.replace(b'"version":3', b'"version":2', 1)
+    assert older != data
+    with pytest.raises(ValueError, match="version 2"):
+        vrsimplify.read_progressive(older)
 
 
 def test_cli_refuses_what_a_progressive_file_cannot_hold(tmp_path):

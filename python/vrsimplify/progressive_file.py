@@ -69,6 +69,43 @@ def _varint(buf: bytes, at: int) -> tuple[int, int]:
         shift += 7
 
 
+_RICE_ESCAPE, _RICE_SPREAD_SHIFT = 16, 3
+
+
+class _Bits:
+    """A record's run of bits, lowest bit of each byte first, from byte ``at``."""
+
+    def __init__(self, buf: bytes, at: int):
+        self.buf, self.pos = buf, 8 * at
+
+    def bit(self) -> int:
+        if self.pos >> 3 >= len(self.buf):
+            raise EOFError
+        b = self.buf[self.pos >> 3] >> (self.pos & 7) & 1
+        self.pos += 1
+        return b
+
+    def bits(self, n: int) -> int:
+        return sum(self.bit() << i for i in range(n))
+
+    def rice(self, k: int) -> int:
+        """A Rice code of parameter ``k``, its escape included."""
+        q = 0
+        while q < _RICE_ESCAPE and self.bit():
+            q += 1
+        if q < _RICE_ESCAPE:
+            return q << k | self.bits(k)
+        return self.bits(self.bits(6))
+
+    def end(self) -> int:
+        """The byte after the run (its last byte padded)."""
+        return (self.pos + 7) >> 3
+
+
+def _rice_parameter(spread: int) -> int:
+    return max(0, spread.bit_length() - _RICE_SPREAD_SHIFT)
+
+
 def _chunks(data: bytes) -> tuple[dict, bytes]:
     magic, version, _ = struct.unpack_from("<III", data, 0)
     if magic != 0x46546C67 or version != 2:
@@ -125,8 +162,8 @@ def read_progressive(source, records: int | None = None) -> ProgressiveFile:
     sview = views[ext["bufferView"]]
     stream = binary[sview.get("byteOffset", 0) : sview.get("byteOffset", 0) + sview["byteLength"]]
 
-    if ext.get("version") != 2:
-        raise ValueError("a %s stream of version %s: this reader knows version 2" % (EXTENSION, ext.get("version")))
+    if ext.get("version") != 3:
+        raise ValueError("a %s stream of version %s: this reader knows version 3" % (EXTENSION, ext.get("version")))
     state = _State(faces, base_vertices.tobytes(), stride, layout)
     limit = ext["insertions"] if records is None else min(records, ext["insertions"])
     at = applied = 0
@@ -188,10 +225,10 @@ class _State:
     def vertex_count(self) -> int:
         return len(self.vertices) // self.stride
 
-    def walk(self, first: int, count: int, stream: bytes, at: int) -> tuple[list[int], int]:
+    def walk(self, first: int, count: int, bits: _Bits) -> list[int]:
         """The patch: from face ``first``, one steering bit per side whose face across is not
-        listed yet, until ``count`` faces; returns them and where the bits end."""
-        order, used = [first], 0
+        listed yet, until ``count`` faces."""
+        order = [first]
         i = 0
         while len(order) < count:
             if i == len(order):
@@ -202,13 +239,10 @@ class _State:
                 t = self.across[3 * order[i] + c]
                 if t < 0 or t // 3 in order:
                     continue
-                if at + used // 8 >= len(stream):
-                    raise EOFError
-                if stream[at + used // 8] >> (used % 8) & 1:
+                if bits.bit():
                     order.append(t // 3)
-                used += 1
             i += 1
-        return order, at + (used + 7) // 8
+        return order
 
     def write(self, patch: list[int], faces: list[list[int]]) -> None:
         """The faces into the patch's slots, the rest appended; their sides paired by the
@@ -268,6 +302,7 @@ class _State:
         if reused > k:
             raise ValueError("a record replacing %d faces with %d: not a stream this reads" % (reused, k))
         count = len(self.corners) // 3
+        # First the record's numbers, then its run of bits: the walk's steering, the vertices.
         if listed:
             slots = []
             for _ in range(reused):
@@ -276,8 +311,19 @@ class _State:
         else:
             step, at = _varint(stream, at)
             first = self.previous_first + _unzigzag(step)
-            self.previous_first = first
-            slots, at = self.walk(first, reused, stream, at)
+        refs = []  # the ring's or the faces' vertex references
+        start = open_ = 0
+        if shape == _OPEN_FAN:
+            start, at = _varint(stream, at)
+        elif shape == _LISTED_RING:
+            open_, at = _varint(stream, at)
+        if shape in (_LISTED_RING, 0):
+            for _ in range(k + open_ if shape == _LISTED_RING else 3 * k):
+                r, at = _varint(stream, at)
+                refs.append(r)
+        bits = _Bits(stream, at)
+        if not listed:
+            slots = self.walk(first, reused, bits)
         patch = [self.corners[3 * s + c] for s in slots for c in range(3)]
         before = self.vertex_count
 
@@ -289,9 +335,6 @@ class _State:
             return before - 1 - (ref - added - len(patch))
 
         if shape in (_CLOSED_FAN, _OPEN_FAN):
-            start = 0
-            if shape == _OPEN_FAN:
-                start, at = _varint(stream, at)
             # The outline: the patch's sides with no patch face across, in the patch's order.
             outline = [(patch[t], patch[_next(t)]) for t in range(len(patch))
                        if self.across[3 * slots[t // 3] + t % 3] < 0
@@ -303,22 +346,12 @@ class _State:
             n = len(ring)
             new_faces = [[apex, ring[i], ring[(i + 1) % n]] for i in range(k)]
         elif shape == _LISTED_RING:
-            open_, at = _varint(stream, at)
-            ring = []
-            for _ in range(k + open_):
-                r, at = _varint(stream, at)
-                ring.append(vertex(r))
+            ring = [vertex(r) for r in refs]
             apex = vertex(apex_ref)
             n = len(ring)
             new_faces = [[apex, ring[i], ring[(i + 1) % n]] for i in range(k)]
         else:
-            new_faces = []
-            for _ in range(k):
-                f = []
-                for _ in range(3):
-                    r, at = _varint(stream, at)
-                    f.append(vertex(r))
-                new_faces.append(f)
+            new_faces = [[vertex(r) for r in refs[3 * i : 3 * i + 3]] for i in range(k)]
         # The new vertices: each value its prediction plus a residual.
         rows = bytearray()
         for j in range(added):
@@ -332,7 +365,6 @@ class _State:
             row = bytearray(self.stride)
             for offset, width, floats in self.groups:
                 for i in range(width):
-                    z, at = _varint(stream, at)
                     if floats:
                         o = offset + 4 * i
                         if known:
@@ -342,7 +374,10 @@ class _State:
                             predicted = bytes(rows[self.stride * (j - 1) + o : self.stride * (j - 1) + o + 4])
                         else:
                             predicted = bytes(4)
-                        m = _ordered(struct.unpack("<i", predicted)[0]) + _unzigzag(z)
+                        p = _ordered(struct.unpack("<i", predicted)[0])
+                        spread = max((abs(_ordered(struct.unpack_from("<i", self.vertices, self.stride * u + o)[0]) - p)
+                                      for u in known), default=0)
+                        m = p + _unzigzag(bits.rice(_rice_parameter(spread)))
                         struct.pack_into("<i", row, o, _ordered(m))
                     else:
                         o = offset + i
@@ -352,11 +387,14 @@ class _State:
                             predicted = rows[self.stride * (j - 1) + o]
                         else:
                             predicted = 0
-                        row[o] = (predicted + _unzigzag(z)) & 0xFF
+                        spread = max((abs(self.vertices[self.stride * u + o] - predicted) for u in known), default=0)
+                        row[o] = (predicted + _unzigzag(bits.rice(_rice_parameter(spread)))) & 0xFF
             rows += row
+        if not listed:
+            self.previous_first = first
         self.vertices += rows
         self.write(slots, new_faces)
-        return at
+        return bits.end()
 
 
 def _next(side: int) -> int:

@@ -3,7 +3,8 @@
 //   - once every record is applied, the same faces, each corner the same vertex record bit for
 //     bit (positions, normals, colors, texture coordinates), as many vertices as announced;
 //   - fed in pieces of awkward sizes and applied between them (a record cut anywhere waits for
-//     its bytes), the decoder ends with the same vertex and index bytes as fed the whole file.
+//     its bytes), the decoder ends with the same vertex and index bytes as fed the whole file;
+//   - a stream of another version is refused.
 //   node tests/web/progressive_decoded.mjs PROGRESSIVE.glb FULL.glb
 import { readFileSync } from "node:fs";
 
@@ -64,6 +65,15 @@ const decoded = asRecords(whole.vertices, layout.stride, whole.indices, whole.fa
 const full = fullMesh(fullPath);
 check(decoded.length === full.length && decoded.every((r, i) => r === full[i]),
       "the faces and vertex records of the full mesh");
+
+// A stream of another coding (version 2: residuals as varints) is refused, not misread.
+let refused = "";
+try {
+  new ProgressiveDecoder({ ...layout, version: 2 }, bin);
+} catch (e) {
+  refused = String(e);
+}
+check(/version 2/.test(refused), `a version 2 stream refused: ${refused || "it was read"}`);
 
 const pieces = new ProgressiveDecoder(layout, bin);
 let seed = 7;

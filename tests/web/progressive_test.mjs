@@ -70,8 +70,10 @@ try {
                              longestFrameMs: p.longestFrameMs, longestRefineMs: p.longestRefineMs,
                              samples: p.samples.length });
   }
-  // The decoder's speed in this browser: the whole file's records, no drawing.
-  figures.recordsPerSecond = await streamed.page.evaluate(async (url) => {
+  // The decoder's speed in this browser, the whole file's records and no drawing: in the
+  // viewer's page (SwiftShader draws its frames on the same two cores) and on a page of its
+  // own (as beside a GPU, which draws without the CPU).
+  const decoderSpeed = (page) => page.evaluate(async (url) => {
     const m = await import("./progressive.js");
     const bytes = new Uint8Array(await (await fetch(url)).arrayBuffer());
     const h = m.readHeader(bytes);
@@ -87,8 +89,14 @@ try {
     }
     return best;
   }, `/${name}`);
-  console.log(`info decoder: ${(figures.recordsPerSecond / 1e6).toFixed(2)} M records/s`);
+  figures.recordsPerSecondInViewer = await decoderSpeed(streamed.page);
   await streamed.page.close();
+  const alone = await browser.newPage();
+  await alone.goto(`${base}progressive.js`); // the server's origin, nothing drawn
+  figures.recordsPerSecond = await decoderSpeed(alone);
+  await alone.close();
+  console.log(`info decoder: ${(figures.recordsPerSecond / 1e6).toFixed(2)} M records/s on a page ` +
+              `of its own, ${(figures.recordsPerSecondInViewer / 1e6).toFixed(2)} M in the viewer's`);
 
   // Prefixes: streamed and stopped against GLTFLoader with the plugin, the same records.
   for (const share of streamOnly ? [] : [0.01, 0.05, 0.2, 1]) {
