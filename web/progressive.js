@@ -67,6 +67,13 @@ const distinct = (a, n, below) => {
 // prediction: the spread's bit length less RICE_SPREAD_SHIFT.
 const riceParameter = (spread) => Math.max(0,
   (spread < 2 ** 31 ? 32 - Math.clz32(spread) : spread < 2 ** 32 ? 32 : 33) - RICE_SPREAD_SHIFT);
+// A float's bits as an integer that orders the floats as their values do; its own inverse.
+const ordered = (b) => (b < 0 ? b ^ 0x7fffffff : b);
+const faceOf = (side) => (side - (side % 3)) / 3;
+const holds = (slots, n, face) => { // whether slots[0, n) holds `face`
+  for (let j = 0; j < n; j++) if (slots[j] === face) return true;
+  return false;
+};
 const unzigzag = (z) => ((z & 1) === 0 ? z / 2 : -(z + 1) / 2); // z & 1: its low bit, any size
 
 export class ProgressiveDecoder {
@@ -253,10 +260,8 @@ export class ProgressiveDecoder {
       for (let c = 0; c < 3 && n < count; c++) {
         const t = X[3 * slots[i] + c];
         if (t < 0) continue;
-        const q = (t - (t % 3)) / 3;
-        let listed = false;
-        for (let j = 0; j < n && !listed; j++) listed = slots[j] === q;
-        if (listed) continue;
+        const q = faceOf(t);
+        if (holds(slots, n, q)) continue;
         const b = this.bit();
         if (b < 0) return false;
         if (b) slots[n++] = q;
@@ -331,12 +336,7 @@ export class ProgressiveDecoder {
       for (let i = 0, t = 0; i < reused; i++)
         for (let c = 0; c < 3; c++, t++) {
           const across = X[3 * slots[i] + c];
-          if (across >= 0) {
-            const q = (across - (across % 3)) / 3;
-            let inPatch = false;
-            for (let j = 0; j < reused && !inPatch; j++) inPatch = slots[j] === q;
-            if (inPatch) continue;
-          }
+          if (across >= 0 && holds(slots, reused, faceOf(across))) continue;
           from[sides] = patch[t];
           to[sides] = patch[nextSide(t)];
           outside[sides++] = across;
@@ -409,23 +409,20 @@ export class ProgressiveDecoder {
             if (n) {
               let sum = 0, low = Infinity, high = -Infinity;
               for (let q = 0; q < n; q++) {
-                const at = known[q] * w + o, x = i32[at], ordered = x < 0 ? x ^ 0x7fffffff : x;
+                const at = known[q] * w + o, x = ordered(i32[at]);
                 sum += f32[at];
-                low = Math.min(low, ordered);
-                high = Math.max(high, ordered);
+                low = Math.min(low, x);
+                high = Math.max(high, x);
               }
               asFloat[0] = sum / n;
-              const b = bits[0];
-              predicted = b < 0 ? b ^ 0x7fffffff : b;
+              predicted = ordered(bits[0]);
               spread = Math.max(high - predicted, predicted - low);
             } else {
-              const b = j ? i32[(v - 1) * w + o] : 0;
-              predicted = b < 0 ? b ^ 0x7fffffff : b;
+              predicted = ordered(j ? i32[(v - 1) * w + o] : 0);
             }
             const z = this.rice(riceParameter(spread));
             if (z < 0) return false;
-            const ordered = predicted + unzigzag(z);
-            i32[v * w + o] = ordered < 0 ? ordered ^ 0x7fffffff : ordered;
+            i32[v * w + o] = ordered(predicted + unzigzag(z));
           } else {
             if (n) {
               let sum = 0, low = 255, high = 0;
@@ -457,11 +454,7 @@ export class ProgressiveDecoder {
     for (let i = 0; i < reused && !fan; i++)
       for (let c = 0; c < 3; c++) {
         const side = 3 * slots[i] + c, t = X[side];
-        if (t < 0) continue;
-        const q = (t - (t % 3)) / 3;
-        let inPatch = false;
-        for (let j = 0; j < reused && !inPatch; j++) inPatch = slots[j] === q;
-        if (inPatch) continue;
+        if (t < 0 || holds(slots, reused, faceOf(t))) continue;
         outer[4 * outerCount] = idx[side];
         outer[4 * outerCount + 1] = idx[nextSide(side)];
         outer[4 * outerCount + 2] = t;
