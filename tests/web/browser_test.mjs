@@ -12,6 +12,7 @@ import { mkdir, writeFile } from "node:fs/promises";
 import path from "node:path";
 
 import { checkAgainstLoader, launchBrowser, openPage as open, startServer } from "./harness.mjs";
+import { checks } from "./checks.mjs";
 
 const [servePy, glb, outDir, ...rest] = process.argv.slice(2);
 const option = (name, fallback) => {
@@ -21,11 +22,7 @@ const option = (name, fallback) => {
 const throttle = option("--throttle", 2_000_000);
 const maxFirst = option("--max-first", 0.02); // share of the file the coarsest level may need
 const streamOnly = rest.includes("--stream-only"); // the streaming checks, no per-level renders
-let failures = 0;
-const check = (ok, what) => {
-  console.log(`${ok ? "ok  " : "FAIL"} ${what}`);
-  if (!ok) failures++;
-};
+const { check, failed } = checks({ everyOne: true });
 
 await mkdir(outDir, { recursive: true });
 const { server, base } = await startServer(servePy, glb, throttle);
@@ -69,5 +66,5 @@ try {
   server.kill();
   await writeFile(path.join(outDir, "figures.json"), JSON.stringify(figures, null, 1));
 }
-console.log(failures ? `${failures} check(s) failed` : "all checks passed");
-process.exit(failures ? 1 : 0);
+console.log(failed() ? `${failed()} check(s) failed` : "all checks passed");
+process.exit(failed() ? 1 : 0);

@@ -9,15 +9,10 @@
 //   node tests/web/glb_decoded.mjs PLAIN.glb COMPRESSED.glb
 import { readFileSync } from "node:fs";
 import { MeshoptDecoder } from "../../web/node_modules/three/examples/jsm/libs/meshopt_decoder.module.js";
+import { checks } from "./checks.mjs";
 
 const [plainPath, packedPath] = process.argv.slice(2);
-let failures = 0;
-const check = (ok, what) => {
-  if (!ok) {
-    console.log(`FAIL ${what}`);
-    failures++;
-  }
-};
+const { check, failed } = checks();
 
 function parse(path) {
   const b = readFileSync(path);
@@ -90,5 +85,5 @@ for (let k = 1; k < packed.meshes.length; ++k) {
   check(ok && Buffer.compare(Buffer.from(out), Buffer.from(whole.subarray(0, out.length))) === 0,
         `level ${k}: its ${bytes} bytes of the stream decode alone to the stream's first ${count} vertices`);
 }
-console.log(failures ? `${failures} failed` : "ok: the compressed levels are the plain ones, and stream");
-process.exit(failures ? 1 : 0);
+console.log(failed() ? `${failed()} failed` : "ok: the compressed levels are the plain ones, and stream");
+process.exit(failed() ? 1 : 0);

@@ -9,15 +9,10 @@
 import { readFileSync } from "node:fs";
 
 import { ProgressiveDecoder, describeProgressive, readHeader } from "../../web/progressive.js";
+import { checks } from "./checks.mjs";
 
 const [progressivePath, fullPath] = process.argv.slice(2);
-let failures = 0;
-const check = (ok, what) => {
-  if (!ok) {
-    console.log(`FAIL ${what}`);
-    failures++;
-  }
-};
+const { check, failed } = checks();
 
 // Faces as sorted triples of vertex records (each rotated to start at its smallest record).
 function asRecords(vertices, stride, indices, faceCount) {
@@ -88,5 +83,5 @@ check(pieces.applied === layout.insertions, `in pieces: applied ${pieces.applied
 check(Buffer.compare(Buffer.from(pieces.vertices), Buffer.from(whole.vertices)) === 0 &&
       Buffer.compare(Buffer.from(pieces.indices.buffer), Buffer.from(whole.indices.buffer)) === 0,
       "in pieces: the same vertex and index bytes as whole");
-if (failures) process.exit(1);
+if (failed()) process.exit(1);
 console.log(`ok ${progressivePath}: ${layout.insertions} records, ${layout.faceCount} faces`);

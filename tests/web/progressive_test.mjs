@@ -18,6 +18,7 @@ import path from "node:path";
 
 import { checkAgainstLoader, launchBrowser, openPage as open, progressiveFile, startServer }
   from "./harness.mjs";
+import { checks } from "./checks.mjs";
 
 const [servePy, glb, outDir, ...rest] = process.argv.slice(2);
 const option = (name, fallback) => {
@@ -28,11 +29,7 @@ const throttle = option("--throttle", 500_000);
 const maxFirst = option("--max-first", 0.02);
 const decoderOnly = rest.includes("--decoder-only");
 const streamOnly = decoderOnly || rest.includes("--stream-only"); // no prefix renders
-let failures = 0;
-const check = (ok, what) => {
-  console.log(`${ok ? "ok  " : "FAIL"} ${what}`);
-  if (!ok) failures++;
-};
+const { check, failed } = checks({ everyOne: true });
 
 const file = new Uint8Array(await readFile(glb));
 const { layout, recordsWithin } = progressiveFile(file);
@@ -120,5 +117,5 @@ try {
   server.kill();
   await writeFile(path.join(outDir, "figures.json"), JSON.stringify(figures, null, 1));
 }
-console.log(failures ? `${failures} check(s) failed` : "all checks passed");
-process.exit(failures ? 1 : 0);
+console.log(failed() ? `${failed()} check(s) failed` : "all checks passed");
+process.exit(failed() ? 1 : 0);
