@@ -432,6 +432,43 @@ TEST(InputSurface, FoldedAreaIsTheShareOfATriangleTurnedFromTheInputNearestIt) {
   EXPECT_GT(surface.folded_area(large, eval, 0, 1e-310), 1e-310);
 }
 
+// A triangle asked before is answered from the thread's table (TriangleAnswers), and the
+// answer is the one asking again would give: a patch whose count passes the budget in its
+// second triangle stops at the same point whether its first was asked before or not (then
+// read back, its count added point by point), and a surface built again over other faces is
+// asked afresh.
+TEST(InputSurface, ATriangleAskedAgainIsAnsweredAsBefore) {
+  vrs::Mesh input = vrs_test::grid(40);
+  const double h = 0.3;
+  add_overhang(input, 12, 12, 5, float(h + 0.1));
+  const vrs::Evaluator eval = evaluator(input);
+  const Vec3 a{0, 0, h}, b{40, 0, h}, c{0, 40, h}, d{40, 40, h};
+  vrs::Patch two = patch_of(a, b, c);
+  two.count = 2, two.q[3] = d, two.tri[0] = {0, 2, 1}, two.tri[1] = {1, 2, 3};
+  const double inf = std::numeric_limits<double>::infinity();
+  const double budget = 700; // the first triangle's turned part (about 689), and a little
+  vrs::InputSurface cold;
+  cold.keep(input.triangles);
+  const double first = cold.folded_area(two, eval, 0, budget);
+  ASSERT_GT(first, budget);
+  vrs::InputSurface warm;
+  warm.keep(input.triangles);
+  const double alone = warm.folded_area(patch_of(a, c, b), eval, 0, inf);
+  EXPECT_LT(alone, budget);
+  EXPECT_GT(alone, 600.0);
+  EXPECT_EQ(warm.folded_area(two, eval, 0, budget), first);
+  EXPECT_EQ(warm.folded_area(two, eval, 0, budget), first) << "the first triangle read back";
+  EXPECT_TRUE(warm.folds(two, eval));
+  EXPECT_TRUE(warm.folds(two, eval));
+  // The same corners over a sheet with no overhang: nothing folds.
+  const vrs::Mesh sheet = vrs_test::grid(40);
+  const vrs::Evaluator flat = evaluator(sheet);
+  vrs::InputSurface other;
+  other.keep(sheet.triangles);
+  EXPECT_EQ(other.folded_area(patch_of(a, b, c), flat, 0, inf), 0.0);
+  EXPECT_FALSE(other.folds(patch_of(a, b, c), flat));
+}
+
 // A triangle past any grid (1e40 times the mean input face, as the fuzzer made one) is
 // sampled on the largest grid: the side is clamped before it becomes an int (UBSan: a side
 // of 6.5e18 converted was undefined).

@@ -6,6 +6,7 @@
 #include <limits>
 
 #include "base/distance.h"
+#include "evaluate/triangle_answers.h"
 
 namespace vrs {
 
@@ -309,6 +310,8 @@ void InputSurface::build_now(const Positions& eval, Workers* workers) const {
     std::atomic<bool>& flag;
     ~Done() { flag.store(true, std::memory_order_release); }
   } done{done_};
+  static std::atomic<uint64_t> builds{0};
+  id_ = ++builds;
   size_t kept = 0;
   for (size_t i = 0; i + 2 < tris_.size(); i += 3) {
     const Vec3 a = eval.position(tris_[i]), b = eval.position(tris_[i + 1]),
@@ -518,6 +521,7 @@ bool InputSurface::folds(const Patch& patch, const Positions& eval, double min_c
                          uint64_t turned) const {
   if (!build(eval)) return true; // deferred: the caller plans again once it is built
   size_t hint = kNoFace;         // the sample points are asked in order, each near the one before
+  TriangleAnswers& answers = TriangleAnswers::here();
   for (int t = 0; t < patch.count; ++t) {
     const auto& tri = patch.tri[t];
     const Vec3 a = patch.q[tri[0]], b = patch.q[tri[1]], c = patch.q[tri[2]];
@@ -525,9 +529,16 @@ bool InputSurface::folds(const Patch& patch, const Positions& eval, double min_c
     const Vec3 n = normalized(area_normal);
     const double covers = 0.5 * length(area_normal) / mean_area_;
     if (covers < min_covers) continue;
-    if (each_grid_point(a, b, c, grid_side(covers, max_side),
-                        [&](Vec3 x) { return turned_at(x, n, eval, hint, turned >> t & 1); }))
-      return true;
+    const auto question =
+        TriangleAnswers::question(a, b, c, id_, 2 + (turned >> t & 1), min_covers, max_side);
+    double answer;
+    if (!answers.find(question, answer)) {
+      answer = each_grid_point(a, b, c, grid_side(covers, max_side), [&](Vec3 x) {
+        return turned_at(x, n, eval, hint, turned >> t & 1);
+      });
+      answers.store(question, answer);
+    }
+    if (answer) return true;
   }
   return false;
 }
@@ -536,6 +547,7 @@ double InputSurface::folded_area(const Patch& patch, const Positions& eval, doub
                                  double budget, uint64_t turned) const {
   if (!build(eval)) return std::numeric_limits<double>::infinity(); // deferred, as folds()
   size_t hint = kNoFace;
+  TriangleAnswers& answers = TriangleAnswers::here();
   double folded = 0;
   const double inf = std::numeric_limits<double>::infinity();
   for (int t = 0; t < patch.count; ++t) {
@@ -553,11 +565,22 @@ double InputSurface::folded_area(const Patch& patch, const Positions& eval, doub
         budget < inf ? std::ceil(std::sqrt(kCellsPerBudget * area / budget)) : kGridMax;
     const int L = side < kGridMax ? std::max(2, int(side)) : kGridMax;
     const double per_point = area / double(L * L); // L * L sub-triangles of equal area
+    // The answer kept is the count of folded points, added one at a time as when asked.
+    const auto question =
+        TriangleAnswers::question(a, b, c, id_, 4 + (turned >> t & 1), min_area, budget);
+    double points;
+    if (answers.find(question, points)) {
+      for (; points > 0; --points)
+        if ((folded += per_point) > budget) return folded;
+      continue;
+    }
+    points = 0;
     if (each_grid_point(a, b, c, L, [&](Vec3 x) {
-          folded += turned_at(x, n, eval, hint, turned >> t & 1) ? per_point : 0.0;
+          if (turned_at(x, n, eval, hint, turned >> t & 1)) folded += per_point, ++points;
           return folded > budget;
         }))
-      break;
+      break; // not kept: the points after were not asked
+    answers.store(question, points);
   }
   return folded;
 }

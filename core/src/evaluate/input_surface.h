@@ -237,6 +237,7 @@ class InputSurface {
   void build_now(const Positions& eval, Workers* workers) const;
   mutable std::once_flag build_once_;
   mutable std::atomic<bool> done_{false}; // build_now has run
+  mutable uint64_t id_ = 0;               // this build's, unique in the process (TriangleAnswers)
   mutable UninitVector<uint32_t> tris_;   // 3 a face, faces with area only
   mutable std::vector<uint8_t> turned_;   // a byte a face of tris_, or empty (keep())
   mutable double mean_area_ = 0;          // of the input's faces with area
