@@ -433,34 +433,39 @@ TEST(InputSurface, FoldedAreaIsTheShareOfATriangleTurnedFromTheInputNearestIt) {
 }
 
 // A triangle asked before is answered from the thread's table (TriangleAnswers), and the
-// answer is the one asking again would give: a patch whose count passes the budget in its
-// second triangle stops at the same point whether its first was asked before or not (then
-// read back, its count added point by point), and a surface built again over other faces is
-// asked afresh.
+// answer is the one asking again would give. Two triangles facing down over a sheet, a square
+// hanging over the first: on the grid of a budget of 800 (2 x 2 points of 200) the first has
+// three points folded (600), the second passes the budget at its second point. Asked again,
+// the first's count is read back and added point by point: the same stop, the same value;
+// asked before with another budget (another grid), or of a surface built over other faces,
+// the answer is not reused.
 TEST(InputSurface, ATriangleAskedAgainIsAnsweredAsBefore) {
   vrs::Mesh input = vrs_test::grid(40);
-  const double h = 0.3;
-  add_overhang(input, 12, 12, 5, float(h + 0.1));
+  const double h = 0.25; // floats, as a mesh's corners are: the table keeps those
+  add_overhang(input, 12, 12, 5, float(h + 0.125));
   const vrs::Evaluator eval = evaluator(input);
   const Vec3 a{0, 0, h}, b{40, 0, h}, c{0, 40, h}, d{40, 40, h};
   vrs::Patch two = patch_of(a, b, c);
   two.count = 2, two.q[3] = d, two.tri[0] = {0, 2, 1}, two.tri[1] = {1, 2, 3};
   const double inf = std::numeric_limits<double>::infinity();
-  const double budget = 700; // the first triangle's turned part (about 689), and a little
   vrs::InputSurface cold;
   cold.keep(input.triangles);
-  const double first = cold.folded_area(two, eval, 0, budget);
-  ASSERT_GT(first, budget);
+  const double first = cold.folded_area(two, eval, 0, 800);
+  EXPECT_EQ(first, 1000.0);
   vrs::InputSurface warm;
   warm.keep(input.triangles);
-  const double alone = warm.folded_area(patch_of(a, c, b), eval, 0, inf);
-  EXPECT_LT(alone, budget);
-  EXPECT_GT(alone, 600.0);
-  EXPECT_EQ(warm.folded_area(two, eval, 0, budget), first);
-  EXPECT_EQ(warm.folded_area(two, eval, 0, budget), first) << "the first triangle read back";
+  const double whole = warm.folded_area(two, eval, 0, inf); // the 12 x 12 grids
+  EXPECT_GT(whole, 1400.0);
+  EXPECT_LT(whole, 1600.0);
+  EXPECT_EQ(warm.folded_area(two, eval, 0, 800), first);
+  EXPECT_EQ(warm.folded_area(two, eval, 0, 800), first) << "the first triangle read back";
+  EXPECT_EQ(warm.folded_area(two, eval, 0, 2000), 1400.0) << "2 x 2 grids: 3 and 4 points";
+  EXPECT_EQ(warm.folded_area(two, eval, 0, inf), whole);
   EXPECT_TRUE(warm.folds(two, eval));
   EXPECT_TRUE(warm.folds(two, eval));
-  // The same corners over a sheet with no overhang: nothing folds.
+  // Facing up, the same corners fold where the square is nearer; over a plain sheet, nowhere.
+  EXPECT_GT(warm.folded_area(patch_of(a, b, c), eval, 0, inf), 50.0);
+  EXPECT_TRUE(warm.folds(patch_of(a, b, c), eval));
   const vrs::Mesh sheet = vrs_test::grid(40);
   const vrs::Evaluator flat = evaluator(sheet);
   vrs::InputSurface other;

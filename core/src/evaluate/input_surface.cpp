@@ -529,14 +529,15 @@ bool InputSurface::folds(const Patch& patch, const Positions& eval, double min_c
     const Vec3 n = normalized(area_normal);
     const double covers = 0.5 * length(area_normal) / mean_area_;
     if (covers < min_covers) continue;
-    const auto question =
-        TriangleAnswers::question(a, b, c, id_, 2 + (turned >> t & 1), min_covers, max_side);
+    TriangleAnswers::Question question;
+    const bool kept = TriangleAnswers::question(a, b, c, id_, 2 + (turned >> t & 1), min_covers,
+                                                max_side, question);
     double answer;
-    if (!answers.find(question, answer)) {
+    if (!kept || !answers.find(question, answer)) {
       answer = each_grid_point(a, b, c, grid_side(covers, max_side), [&](Vec3 x) {
         return turned_at(x, n, eval, hint, turned >> t & 1);
       });
-      answers.store(question, answer);
+      if (kept) answers.store(question, answer);
     }
     if (answer) return true;
   }
@@ -566,10 +567,11 @@ double InputSurface::folded_area(const Patch& patch, const Positions& eval, doub
     const int L = side < kGridMax ? std::max(2, int(side)) : kGridMax;
     const double per_point = area / double(L * L); // L * L sub-triangles of equal area
     // The answer kept is the count of folded points, added one at a time as when asked.
-    const auto question =
-        TriangleAnswers::question(a, b, c, id_, 4 + (turned >> t & 1), min_area, budget);
+    TriangleAnswers::Question question;
+    const bool kept =
+        TriangleAnswers::question(a, b, c, id_, 4 + (turned >> t & 1), min_area, budget, question);
     double points;
-    if (answers.find(question, points)) {
+    if (kept && answers.find(question, points)) {
       for (; points > 0; --points)
         if ((folded += per_point) > budget) return folded;
       continue;
@@ -580,7 +582,7 @@ double InputSurface::folded_area(const Patch& patch, const Positions& eval, doub
           return folded > budget;
         }))
       break; // not kept: the points after were not asked
-    answers.store(question, points);
+    if (kept) answers.store(question, points);
   }
   return folded;
 }

@@ -26,16 +26,21 @@ class TriangleAnswers {
     double terms[2];
     bool operator==(const Question& o) const { return std::memcmp(this, &o, sizeof o) == 0; }
   };
-  static Question question(Vec3 a, Vec3 b, Vec3 c, uint64_t surface, uint32_t kind, double t0,
-                           double t1) {
-    Question q;
+  // The question, when every corner is a float (the mesh's positions are): false for other
+  // points, which the table cannot tell apart by their floats.
+  static bool question(Vec3 a, Vec3 b, Vec3 c, uint64_t surface, uint32_t kind, double t0,
+                       double t1, Question& q) {
     std::memset(&q, 0, sizeof q); // padding too: questions compare as bytes
     const Vec3 p[3] = {a, b, c};
-    for (int i = 0; i < 3; ++i)
-      q.corner[3 * i] = float(p[i].x), q.corner[3 * i + 1] = float(p[i].y),
-                   q.corner[3 * i + 2] = float(p[i].z);
+    for (int i = 0; i < 3; ++i) {
+      const double x[3] = {p[i].x, p[i].y, p[i].z};
+      for (int k = 0; k < 3; ++k) {
+        q.corner[3 * i + k] = float(x[k]);
+        if (!(double(q.corner[3 * i + k]) == x[k])) return false;
+      }
+    }
     q.kind = kind, q.surface = surface, q.terms[0] = t0, q.terms[1] = t1;
-    return q;
+    return true;
   }
   // This thread's table.
   static TriangleAnswers& here() {
