@@ -386,9 +386,8 @@ TEST(InputSurface, ALargeTriangleIsJudgedAllOver) {
 }
 
 // About a point every two input faces covered, up to 144: a fold smaller than a sixth of the
-// triangle's side, between the points of a 6 x 6 grid (the grid until 2026-11-28), is found.
-// Wuson and b9_mesh at 10 % and 1 % kept 1.1-1.6 % of their area folded that way, in
-// triangles over 8-21 input faces (bench/ablation.md).
+// triangle's side, between the points of a 6 x 6 grid, is found (bench/ablation.md: such
+// folds inside triangles over 8-21 input faces).
 TEST(InputSurface, ATriangleOverHundredsOfFacesIsSampledOnAFineGrid) {
   vrs::Mesh input = vrs_test::grid(40);
   const double h = 0.3;
