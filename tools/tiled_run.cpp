@@ -8,7 +8,6 @@
 #include <cstring>
 #include <stdexcept>
 #include <string>
-#include <thread>
 #include <vector>
 
 #include <sys/stat.h>
@@ -16,6 +15,7 @@
 
 #include "interrupt_guard.h"
 #include "python_module.h"
+#include "vrs/simplify.h"
 #include "vrs/tiled.h"
 
 namespace vrs_tool {
@@ -56,8 +56,7 @@ int run_in(const std::string& dir, const TiledRequest& r, int workers);
 int run_tiled(const TiledRequest& r) {
   if (!r.scheduler.empty()) return run_on_dask(r);
   const int workers =
-      std::min(vrs::tiled::kTilesInMemory,
-               r.workers > 0 ? r.workers : int(std::max(1u, std::thread::hardware_concurrency())));
+      std::min(vrs::tiled::kTilesInMemory, r.workers > 0 ? r.workers : vrs::usable_cores());
   std::string dir;
   try {
     // Beside the output unless told: the tile files take about twice the input's size.

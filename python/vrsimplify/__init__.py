@@ -333,7 +333,8 @@ def simplify(mesh_vertices, mesh_faces, /, *, ratio: Optional[float] = None,
     mode : {"surface", "terrain", "planar"}
         3D, 2.5D (the XY plane) or 2D.
     threads : int
-        0 = every hardware thread; the output is the same for any number.
+        0 = every core this process may use (its CPU affinity, its container's CPU quota); the
+        output is the same for any number.
     boundary : {"auto", "keep", "simplify"}
         Border vertices: "auto" keeps them unless the kept border alone would take more than
         a quarter of the faces asked for (``report["boundary_simplified"]``); "keep" keeps

@@ -6,6 +6,11 @@
 #include <chrono>
 #include <cmath>
 
+#if defined(__linux__)
+#include <sched.h>
+#endif
+
+#include "base/cores.h"
 #include "base/workers.h"
 #include "mesh_checks.h"
 #include "test_meshes.h"
@@ -25,6 +30,63 @@ TEST(Workers, EveryItemRunsOnceWhateverTheThreadsAndGrain) {
         for (size_t i = 0; i < n; ++i)
           ASSERT_EQ(hits[i].load(), 3) << "item " << i << ", " << threads << " threads";
       }
+}
+
+// The default thread count is the cores the process may run on: pinned to one core (as
+// `taskset -c 0` pins a run), one thread; to two, two at most (a container's quota may grant
+// fewer). Threads past those would only wait for a core.
+TEST(UsableCores, FollowTheAffinity) {
+#if defined(__linux__)
+  cpu_set_t before;
+  ASSERT_EQ(sched_getaffinity(0, sizeof before, &before), 0);
+  std::vector<int> allowed;
+  for (int c = 0; c < CPU_SETSIZE; ++c)
+    if (CPU_ISSET(c, &before)) allowed.push_back(c);
+  ASSERT_FALSE(allowed.empty());
+  EXPECT_LE(usable_cores(), int(allowed.size()));
+  for (size_t n : {size_t(1), size_t(2)}) {
+    if (n > allowed.size()) break;
+    cpu_set_t some;
+    CPU_ZERO(&some);
+    for (size_t i = 0; i < n; ++i)
+      CPU_SET(allowed[i], &some);
+    ASSERT_EQ(sched_setaffinity(0, sizeof some, &some), 0);
+    const int cores = usable_cores();
+    EXPECT_GE(cores, 1);
+    EXPECT_LE(cores, int(n)) << n << " cores allowed";
+    if (n == 1) {
+      EXPECT_EQ(cores, 1);
+    }
+    // A run on the default count there: the same output as on one thread.
+    Mesh a = vrs_test::icosphere(3), b = a;
+    Options o;
+    o.target.kind = TargetKind::Faces;
+    o.target.faces = a.face_count() / 5;
+    o.threads = 0;
+    ASSERT_TRUE(simplify(a, o).ok);
+    o.threads = 1;
+    ASSERT_TRUE(simplify(b, o).ok);
+    EXPECT_EQ(a.triangles, b.triangles);
+  }
+  ASSERT_EQ(sched_setaffinity(0, sizeof before, &before), 0);
+#else
+  GTEST_SKIP() << "affinity masks: Linux";
+#endif
+}
+
+// A container's CPU quota, as cgroup v2 (cpu.max) and v1 (quota and period) write it.
+TEST(UsableCores, AQuotaGrantsItsCoresRoundedUp) {
+  EXPECT_EQ(cores_in_quota("50000 100000\n"), 1);
+  EXPECT_EQ(cores_in_quota("100000 100000"), 1);
+  EXPECT_EQ(cores_in_quota("150000 100000"), 2);
+  EXPECT_EQ(cores_in_quota("400000 100000\n"), 4);
+  EXPECT_EQ(cores_in_quota("max 100000\n"), 0);
+  EXPECT_EQ(cores_in_quota(""), 0);
+  EXPECT_EQ(cores_in_quota("garbage"), 0);
+  EXPECT_EQ(cores_in_quota("12x 100000"), 0);
+  EXPECT_EQ(cores_in_quota(-1, 100000), 0);
+  EXPECT_EQ(cores_in_quota(250000, 100000), 3);
+  EXPECT_EQ(cores_in_quota(100000, 0), 0);
 }
 
 // The projection to more threads (bench/SPEED.md, "by chunks"): each loop's own time in rounds

@@ -18,9 +18,8 @@
 #include <sys/wait.h>
 #include <unistd.h>
 
-#include <thread>
-
 #include "tile_files.h"
+#include "vrs/simplify.h"
 #include "vrs/tiled.h"
 
 namespace vrs::tiled {
@@ -28,7 +27,7 @@ namespace vrs::tiled {
 void run_level_locally(const std::string& workdir, const Level& level, int workers, bool progress,
                        const std::function<void()>& interrupted) {
   // 0: the machine's cores, as documented (and as the CLI counts them).
-  if (workers <= 0) workers = int(std::max(1u, std::thread::hardware_concurrency()));
+  if (workers <= 0) workers = vrs::usable_cores();
   const int cores = workers;     // a lone tile's threads
   if (level.serial) workers = 1; // tiles of the whole budget: one at a time
   workers = int(std::max<uint64_t>(1, std::min<uint64_t>({uint64_t(std::max(workers, 1)),

@@ -184,8 +184,8 @@ struct Options {
   // output's vertices stay input vertices, their attributes untouched; Report::slid), on the
   // 1 000 fans farthest from the input (every one of a small output). False: the run's faces.
   bool slide = true;
-  // Threads to plan removals on (0: the machine's hardware threads). The output is the same
-  // whatever the number: independent removals are planned together, committed in queue order.
+  // Threads to plan removals on (0: usable_cores()). The output is the same whatever the
+  // number: independent removals are planned together, committed in queue order.
   int threads = 0;
   // A guaranteed error: no point of the output farther than this from the input surface, and
   // no point of the input farther than this from the output (symmetric Hausdorff distance),
@@ -347,6 +347,11 @@ std::string report_json(const Report& report, const ReportContext& context);
 // relative order) and triangles rewritten. On invalid input (report.ok == false) the mesh is
 // left exactly as given. Deterministic: the same input and options give the same output.
 Report simplify(Mesh& mesh, const Options& options);
+
+// The threads Options::threads = 0 stands for: the cores this process may run on (its CPU
+// affinity) and is given time on (a container's CPU quota), at least 1. Tiled runs count
+// their worker processes with it too.
+int usable_cores();
 
 // The options for a run on a piece of a larger input (a tile, a level of detail made from the
 // finer one): re-priced as the whole input would be in core (Tuning::lazy_from_faces read

@@ -3,6 +3,8 @@
 #include <algorithm>
 #include <chrono>
 
+#include "vrs/simplify.h"
+
 namespace vrs {
 
 namespace {
@@ -59,11 +61,7 @@ void for_each_block(Workers* workers, size_t n, size_t block,
               [&](size_t b) { fn(b * block, std::min(n, (b + 1) * block)); });
 }
 
-int hardware_threads() {
-  return std::max(1, int(std::thread::hardware_concurrency()));
-}
-
-Workers::Workers(int threads) : poll_(threads <= hardware_threads()) {
+Workers::Workers(int threads) : poll_(threads <= usable_cores()) {
   for (int t = 1; t < threads; ++t)
     pool_.emplace_back([this] { serve(); });
 }

@@ -112,9 +112,6 @@ inline std::pair<size_t, size_t> range_of(size_t r, size_t ranges, size_t n) {
   return {std::min(n, r * per), std::min(n, (r + 1) * per)};
 }
 
-// The number of threads Options::threads = 0 stands for: the machine's hardware threads.
-int hardware_threads();
-
 // v holds n copies of x, written block by block on the workers (null: on the caller).
 template <class T> void fill_on(Workers* workers, UninitVector<T>& v, size_t n, const T& x) {
   v.resize(n);

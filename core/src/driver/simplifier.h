@@ -233,7 +233,7 @@ class Simplifier {
                      opt_.tuning.priority == Priority::LocalError &&
                      mesh_.face_count() >= opt_.tuning.lazy_from_faces;
   Topology topo_;
-  Workers workers_{opt_.threads > 0 ? opt_.threads : hardware_threads()};
+  Workers workers_{opt_.threads > 0 ? opt_.threads : usable_cores()};
   std::vector<Planned> batch_;
   std::vector<uint32_t> batch_ids_; // the vertices read off the queue for batch_
   int batch_from_ = 0;              // the interval they were read off

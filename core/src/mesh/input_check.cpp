@@ -22,7 +22,7 @@ std::string check_options(const Options& o, size_t vertex_count, size_t face_cou
   if (static_cast<unsigned>(o.tuning.mapping) > static_cast<unsigned>(IntervalMapping::Logarithmic))
     return "unknown interval mapping";
   if (o.threads < 0 || o.threads > 1024)
-    return "threads must be in [0, 1024] (0: all hardware threads), got " +
+    return "threads must be in [0, 1024] (0: every core this process may use), got " +
            std::to_string(o.threads);
   if (o.tuning.part_vertices < 0 || (o.tuning.part_vertices > 0 && o.tuning.part_vertices < 64))
     return "part vertices must be 0 (no parts) or >= 64, got " +
