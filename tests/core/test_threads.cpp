@@ -2,12 +2,19 @@
 // a lazy or eager re-pricing break an invariant).
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <atomic>
 #include <chrono>
 #include <cmath>
 
 #if defined(__linux__)
 #include <sched.h>
+#include <sys/stat.h>
+#include <sys/wait.h>
+#include <unistd.h>
+
+#include <fstream>
+#include <string>
 #endif
 
 #include "base/cores.h"
@@ -71,6 +78,42 @@ TEST(UsableCores, FollowTheAffinity) {
   ASSERT_EQ(sched_setaffinity(0, sizeof before, &before), 0);
 #else
   GTEST_SKIP() << "affinity masks: Linux";
+#endif
+}
+
+// A real CPU quota of half a core (a cgroup of its own, as `docker --cpus 0.5` makes one): a
+// process in it counts one core. Needs root and a writable cgroup hierarchy (v1's cpu
+// controller or v2's cpu.max); skipped elsewhere. The cgroup is removed afterwards.
+TEST(UsableCores, AContainersQuotaLimitsThem) {
+#if defined(__linux__)
+  const std::string name = "vrs_test_quota_" + std::to_string(getpid());
+  struct Layout {
+    std::string dir, file, quota;
+  };
+  const Layout layouts[] = {{"/sys/fs/cgroup/cpu/" + name, "cpu.cfs_quota_us", "50000"},
+                            {"/sys/fs/cgroup/" + name, "cpu.max", "50000 100000"}};
+  for (const Layout& l : layouts) {
+    if (mkdir(l.dir.c_str(), 0755) != 0) continue;
+    const bool set = bool(std::ofstream(l.dir + "/" + l.file) << l.quota << std::endl);
+    int cores = -1;
+    if (set) {
+      const pid_t child = fork();
+      if (child == 0) { // into the cgroup, then count
+        const bool in = bool(std::ofstream(l.dir + "/cgroup.procs") << getpid() << std::endl);
+        _exit(in ? std::min(usable_cores(), 100) : 101);
+      }
+      int status = 0;
+      if (child > 0 && waitpid(child, &status, 0) == child && WIFEXITED(status))
+        cores = WEXITSTATUS(status);
+    }
+    rmdir(l.dir.c_str());
+    if (cores < 0 || cores > 100) continue; // not allowed here: the next layout
+    EXPECT_EQ(cores, 1) << "a quota of half a core (" << l.dir << ")";
+    return;
+  }
+  GTEST_SKIP() << "no cgroup of our own can be made here (needs root, a writable hierarchy)";
+#else
+  GTEST_SKIP() << "cgroups: Linux";
 #endif
 }
 

@@ -42,22 +42,33 @@ std::string cgroup_path(const std::string& controller) {
   return "";
 }
 
-// The CPU quota's cores, 0 for none found: the process's own cgroup first, then the root a
-// container sees as its own.
+// The cgroup above `path` ("/a/b" -> "/a" -> "/"), "" above the root.
+std::string parent_of(const std::string& path) {
+  if (path.empty() || path == "/") return "";
+  const size_t slash = path.find_last_of('/');
+  return slash == 0 || slash == std::string::npos ? "/" : path.substr(0, slash);
+}
+
+// The least CPU quota of the process's cgroup and those above it (a container's limit may
+// sit on a parent), in cores; 0 for none. Where the container's own cgroup is the root it
+// sees, /proc/self/cgroup names "/".
 int quota_cores() {
+  int least = 0;
+  auto take = [&](int n) {
+    if (n > 0 && (least == 0 || n < least)) least = n;
+  };
 #if defined(__linux__)
-  for (const std::string& dir : {"/sys/fs/cgroup" + cgroup_path(""), std::string("/sys/fs/cgroup")})
-    if (const int n = cores_in_quota(read_text(dir + "/cpu.max"))) return n;
-  for (const std::string& dir :
-       {"/sys/fs/cgroup/cpu" + cgroup_path("cpu"), std::string("/sys/fs/cgroup/cpu")}) {
+  for (std::string p = cgroup_path(""); !p.empty(); p = parent_of(p))
+    take(cores_in_quota(read_text("/sys/fs/cgroup" + p + "/cpu.max")));
+  for (std::string p = cgroup_path("cpu"); !p.empty(); p = parent_of(p)) {
+    const std::string dir = "/sys/fs/cgroup/cpu" + p;
     const std::string quota = read_text(dir + "/cpu.cfs_quota_us"),
                       period = read_text(dir + "/cpu.cfs_period_us");
-    if (quota.empty() || period.empty()) continue;
-    if (const int n = cores_in_quota(std::atoll(quota.c_str()), std::atoll(period.c_str())))
-      return n;
+    if (!quota.empty() && !period.empty())
+      take(cores_in_quota(std::atoll(quota.c_str()), std::atoll(period.c_str())));
   }
 #endif
-  return 0;
+  return least;
 }
 
 } // namespace
