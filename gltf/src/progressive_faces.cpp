@@ -6,14 +6,6 @@
 
 namespace vrs {
 
-namespace {
-
-uint32_t next_corner(uint32_t side) {
-  return side % 3 == 2 ? side - 2 : side + 1;
-}
-
-} // namespace
-
 // The base rule: sides in order, at most one waiting for each way between two vertices; a side
 // from a to b pairs with the one waiting from b to a, else waits unless one from a to b does.
 ProgressiveFaces::ProgressiveFaces(const std::vector<uint32_t>& base)
@@ -56,20 +48,30 @@ bool ProgressiveFaces::walk(uint32_t first, const std::vector<uint32_t>& patch,
   return in(patch, first);
 }
 
-// The record rule: the patch's sides that face a face outside it are its outer sides (those
+void ProgressiveFaces::outline(const std::vector<uint32_t>& patch,
+                               std::vector<OutlineSide>& out) const {
+  out.clear();
+  for (uint32_t p : patch)
+    for (uint32_t c = 0; c < 3; ++c) {
+      const uint32_t s = 3 * p + c, t = across_[s];
+      if (t != kNone && std::find(patch.begin(), patch.end(), t / 3) != patch.end()) continue;
+      out.push_back({corners_[s], corners_[next_corner(s)], t});
+    }
+}
+
+// The record rule: the outline's sides with a face across are the patch's outer sides (those
 // faces lose their pairing); then each new side in order, unless already paired, pairs with the
 // first unused outer side that runs the same way, else with the first later new side that runs
 // back, else with none.
 void ProgressiveFaces::write(const std::vector<uint32_t>& patch, const std::vector<Face>& faces) {
+  outline(patch, outline_);
   std::vector<Outer>& outer = outer_;
   outer.clear();
-  for (uint32_t p : patch)
-    for (uint32_t c = 0; c < 3; ++c) {
-      const uint32_t s = 3 * p + c, t = across_[s];
-      if (t == kNone || std::find(patch.begin(), patch.end(), t / 3) != patch.end()) continue;
-      outer.push_back({corners_[s], corners_[next_corner(s)], t, false});
-      across_[t] = kNone;
-    }
+  for (const OutlineSide& o : outline_) {
+    if (o.across == kNone) continue;
+    outer.push_back({o.a, o.b, o.across, false});
+    across_[o.across] = kNone;
+  }
   std::vector<uint32_t>& sides = sides_; // the new faces' sides, in order
   sides.clear();
   for (size_t i = 0; i < faces.size(); ++i) {

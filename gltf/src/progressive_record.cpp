@@ -166,18 +166,10 @@ RecordWriter::Shape RecordWriter::fan_shape(uint32_t apex, size_t& start) {
   turned_ = faces_;
   if (!as_fan(turned_, order_, apex, closed)) return kCorners;
   const size_t sides = closed ? k : k + 1;
-  // The patch's outline in the decoder's order: its sides with no patch face across.
-  outline_.clear();
-  for (size_t t = 0; t < patch_.size(); ++t) {
-    const uint32_t across = state_.across(patch_slots_[t / 3], int(t % 3));
-    if (across != ProgressiveFaces::kNone &&
-        std::find(patch_slots_.begin(), patch_slots_.end(), across / 3) != patch_slots_.end())
-      continue;
-    outline_.push_back({patch_[t], patch_[t % 3 == 2 ? t - 2 : t + 1]});
-  }
+  state_.outline(patch_slots_, outline_);
   if (closed && !outline_.empty()) // a closed fan starts where the outline does
     for (size_t i = 0; i < k; ++i)
-      if (turned_[order_[i]][1] == outline_[0].first) {
+      if (turned_[order_[i]][1] == outline_[0].a) {
         std::rotate(order_.begin(), order_.begin() + i, order_.end());
         break;
       }
@@ -192,13 +184,13 @@ RecordWriter::Shape RecordWriter::fan_shape(uint32_t apex, size_t& start) {
   input_slot_.swap(slots_in_order_);
   // The ring as the outline gives it: each side once, the patch's way round.
   bool fan = outline_.size() == sides && patch_.size() == 3 * (sides - 2) &&
-             (!closed || ring_[0] == outline_[0].first);
+             (!closed || ring_[0] == outline_[0].a);
   for (size_t i = 0; i < sides && fan; ++i) {
     const uint32_t from = ring_[i], to = ring_[(i + 1) % sides];
     size_t at = 0;
-    while (at < outline_.size() && outline_[at].first != from)
+    while (at < outline_.size() && outline_[at].a != from)
       ++at;
-    fan = at < outline_.size() && outline_[at].second == to;
+    fan = at < outline_.size() && outline_[at].b == to;
     if (i == 0) start = at;
   }
   return !fan ? kListedRing : closed ? kClosedFan : kOpenFan;

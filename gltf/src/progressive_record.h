@@ -57,7 +57,7 @@ class RecordWriter {
   std::vector<Face> faces_, turned_;
   std::vector<uint32_t> order_, input_slot_, slots_in_order_, patch_slots_, walked_, patch_, ring_;
   std::vector<uint8_t> bits_;
-  std::vector<std::pair<uint32_t, uint32_t>> outline_;
+  std::vector<ProgressiveFaces::OutlineSide> outline_;
   std::vector<const uint8_t*> known_;
 };
 
